@@ -1,0 +1,40 @@
+#pragma once
+/// @file BackendCapabilities.h
+/// What a backend uses and what it can do, for `--list-backends` and for the
+/// check that refuses to start a backend on a device that cannot run it.
+///
+/// Unlike bgfx, Tessera does not require every feature everywhere: a D3D9-style
+/// backend has no tessellation stages by design. Capabilities differ per
+/// backend, and the host reports them instead of hiding them.
+
+#include <string>
+#include <vector>
+
+namespace tessera::backend {
+
+/// How a backend produces tessellated geometry.
+enum class TessellationPath {
+    None,     ///< draws control meshes only
+    Emulated, ///< fixed-function tessellator emulated in vertex processing (levels 1..14.99)
+    Hardware, ///< Vulkan tessellation control and evaluation stages (levels up to 64)
+};
+
+const char* toString(TessellationPath path);
+
+struct BackendCapabilities {
+    std::string name;          ///< the name given to --backend
+    std::string description;   ///< one line for --list-backends
+    bool requiresGpu = true;   ///< false only for the null backend
+    TessellationPath tessellation = TessellationPath::None;
+    bool usesTransformFeedback = false;
+    bool usesGeometryShaders = false;
+    bool usesCompute = false;
+    float maxTessFactor = 1.0f;
+    /// Empty when the backend can run on the device it was asked about;
+    /// otherwise one entry per missing feature, in plain words.
+    std::vector<std::string> missing;
+
+    bool supported() const { return missing.empty(); }
+};
+
+} // namespace tessera::backend

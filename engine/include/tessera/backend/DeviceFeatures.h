@@ -1,0 +1,27 @@
+#pragma once
+/// @file DeviceFeatures.h
+/// A Vulkan-free description of what a device offers, so backends and the
+/// plugin loader can reason about capabilities without including Vulkan.
+/// The shared Vulkan layer fills it from the physical device.
+
+#include <cstdint>
+#include <string>
+
+namespace tessera::backend {
+
+struct DeviceFeatures {
+    std::string deviceName;          ///< e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+    std::string driverName;          ///< e.g. "llvmpipe" or "NVIDIA"
+    std::string driverInfo;          ///< driver version text
+    bool isCpu = false;              ///< a software rasterizer such as lavapipe
+    bool tessellationShader = false; ///< tessellation control/evaluation stages
+    bool geometryShader = false;
+    bool transformFeedback = false;  ///< VK_EXT_transform_feedback with draw-indirect-byte-count
+    bool pipelineStatistics = false; ///< pipeline statistics queries
+    bool timestamps = false;         ///< timestamp queries on the graphics queue
+    bool fillModeNonSolid = false;   ///< wireframe
+    bool vertexStores = false;       ///< storage writes from vertex/tess/geometry stages
+    uint32_t maxTessellationLevel = 0;
+};
+
+} // namespace tessera::backend

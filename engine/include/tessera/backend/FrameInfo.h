@@ -1,0 +1,31 @@
+#pragma once
+/// @file FrameInfo.h
+/// Per-frame parameters the host hands to Backend::beginFrame.
+
+#include <cstdint>
+#include <glm/glm.hpp>
+
+namespace tessera::gpu {
+class FrameContext; // the shared Vulkan layer's frame; opaque to the data model
+}
+
+namespace tessera::backend {
+
+struct FrameInfo {
+    uint64_t frameIndex = 0;
+    double timeSeconds = 0.0;
+    glm::mat4 view{1.0f};
+    glm::mat4 projection{1.0f};
+    glm::mat4 viewProjection{1.0f};
+    glm::vec3 cameraPosition{0.0f};
+    glm::vec3 sunDirection{0.4f, 0.8f, 0.3f}; ///< towards the sun, normalised by the backend
+    glm::vec4 clearColor{0.55f, 0.68f, 0.85f, 1.0f};
+    uint32_t width = 0;
+    uint32_t height = 0;
+    bool wireframe = false;
+    /// The command buffer, target and profiler of this frame; null on the null
+    /// backend, which runs the frame logic with no GPU.
+    gpu::FrameContext* gpu = nullptr;
+};
+
+} // namespace tessera::backend

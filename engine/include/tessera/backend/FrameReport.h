@@ -1,0 +1,18 @@
+#pragma once
+/// @file FrameReport.h
+/// A backend's own account of a frame, for tests of the data model and for
+/// the HUD. GPU-measured figures live in the profiler, not here.
+
+#include <cstdint>
+
+namespace tessera::backend {
+
+struct FrameReport {
+    uint64_t frameIndex = 0;
+    uint32_t terrainTilesDrawn = 0;
+    /// Triangles the backend submitted (before clipping), as it computes them.
+    uint64_t trianglesSubmitted = 0;
+    uint32_t passes = 0;
+};
+
+} // namespace tessera::backend

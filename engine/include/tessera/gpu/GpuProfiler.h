@@ -1,0 +1,73 @@
+#pragma once
+/// @file GpuProfiler.h
+/// Timestamp and pipeline-statistics queries around every pass, resolved into
+/// the engine Profiler once the frame's fence has signalled (never stalling).
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tessera::profiler {
+class Profiler;
+}
+
+namespace tessera::gpu {
+
+class Device;
+
+class GpuProfiler {
+public:
+    static constexpr uint32_t kMaxPassesPerFrame = 64;
+
+    GpuProfiler(Device& device, profiler::Profiler& profiler, uint32_t framesInFlight);
+    ~GpuProfiler();
+    GpuProfiler(const GpuProfiler&) = delete;
+    GpuProfiler& operator=(const GpuProfiler&) = delete;
+
+    /// Resets the slot's queries at the start of its command buffer.
+    void beginFrame(VkCommandBuffer cmd, uint32_t slot, uint64_t frameIndex);
+    /// Opens a pass: a debug label, a timestamp and, where the device has
+    /// them, pipeline statistics. Passes do not nest (Vulkan forbids two
+    /// active statistics queries); use Device::beginLabel inside a pass.
+    void beginPass(VkCommandBuffer cmd, const char* name);
+    void endPass(VkCommandBuffer cmd);
+    /// Notes the CPU time of submission, used to place GPU events on the
+    /// profiler's timeline.
+    void markSubmitted(uint32_t slot, uint64_t cpuNs);
+    /// Reads the slot's finished queries and records one GpuPassEvent per pass.
+    void collect(uint32_t slot);
+
+    bool timestampsSupported() const { return mTimestamps; }
+    bool statisticsSupported() const { return mStatistics; }
+
+private:
+    struct Pass {
+        std::string name;
+    };
+    struct Slot {
+        uint64_t frameIndex = 0;
+        uint64_t submitNs = 0;
+        std::vector<Pass> passes;
+        bool pending = false;
+    };
+
+    Device& mDevice;
+    profiler::Profiler& mProfiler;
+    VkQueryPool mTimestampPool = VK_NULL_HANDLE;
+    VkQueryPool mStatisticsPool = VK_NULL_HANDLE;
+    VkQueryPipelineStatisticFlags mStatisticFlags = 0;
+    uint32_t mStatisticCount = 0;
+    bool mTimestamps = false;
+    bool mStatistics = false;
+    double mNsPerTick = 1.0;
+    uint64_t mGpuEpochTicks = 0;
+    uint64_t mGpuEpochCpuNs = 0;
+    bool mHaveEpoch = false;
+    std::vector<Slot> mSlots;
+    uint32_t mRecordingSlot = 0;
+    bool mInPass = false;
+};
+
+} // namespace tessera::gpu

@@ -1,0 +1,48 @@
+#pragma once
+/// @file PipelineLayout.h
+/// A pipeline layout with one push-descriptor set and optional push constants.
+///
+/// Tessera binds resources with VK_KHR_push_descriptor: each draw pushes the
+/// few buffers and images it reads, so there are no descriptor pools, sets or
+/// lifetimes to manage. It plays the role of Granite's automatic descriptor
+/// management at a fraction of the code, and every Tessera device has it.
+
+#include <vulkan/vulkan.h>
+
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+namespace tessera::gpu {
+
+class Device;
+
+struct BindingDesc {
+    uint32_t binding = 0;
+    VkDescriptorType type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    VkShaderStageFlags stages = VK_SHADER_STAGE_ALL_GRAPHICS;
+};
+
+class PipelineLayout {
+public:
+    PipelineLayout() = default;
+    PipelineLayout(Device& device, std::initializer_list<BindingDesc> bindings, uint32_t pushConstantBytes,
+                   VkShaderStageFlags pushConstantStages, std::string name);
+    ~PipelineLayout();
+    PipelineLayout(PipelineLayout&& other) noexcept;
+    PipelineLayout& operator=(PipelineLayout&& other) noexcept;
+    PipelineLayout(const PipelineLayout&) = delete;
+    PipelineLayout& operator=(const PipelineLayout&) = delete;
+
+    VkPipelineLayout handle() const { return mLayout; }
+    VkDescriptorSetLayout setLayout() const { return mSetLayout; }
+    VkShaderStageFlags pushConstantStages() const { return mPushStages; }
+
+private:
+    Device* mDevice = nullptr;
+    VkDescriptorSetLayout mSetLayout = VK_NULL_HANDLE;
+    VkPipelineLayout mLayout = VK_NULL_HANDLE;
+    VkShaderStageFlags mPushStages = 0;
+};
+
+} // namespace tessera::gpu

@@ -1,0 +1,166 @@
+#include "tessera/gpu/GpuProfiler.h"
+
+#include "tessera/gpu/Device.h"
+#include "tessera/gpu/VulkanCheck.h"
+#include "tessera/profiler/Profiler.h"
+
+#include <algorithm>
+#include <cassert>
+
+namespace tessera::gpu {
+namespace {
+
+// Results come back in the order of the flag bits, so this table maps each
+// bit to the PipelineStatistics field it fills.
+struct StatisticField {
+    VkQueryPipelineStatisticFlagBits bit;
+    uint64_t profiler::PipelineStatistics::*field;
+    bool needsGeometry;
+    bool needsTessellation;
+};
+
+constexpr StatisticField kFields[] = {
+    {VK_QUERY_PIPELINE_STATISTIC_INPUT_ASSEMBLY_VERTICES_BIT, &profiler::PipelineStatistics::inputAssemblyVertices, false, false},
+    {VK_QUERY_PIPELINE_STATISTIC_INPUT_ASSEMBLY_PRIMITIVES_BIT, &profiler::PipelineStatistics::inputAssemblyPrimitives, false, false},
+    {VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT, &profiler::PipelineStatistics::vertexShaderInvocations, false, false},
+    {VK_QUERY_PIPELINE_STATISTIC_GEOMETRY_SHADER_INVOCATIONS_BIT, &profiler::PipelineStatistics::geometryShaderInvocations, true, false},
+    {VK_QUERY_PIPELINE_STATISTIC_GEOMETRY_SHADER_PRIMITIVES_BIT, &profiler::PipelineStatistics::geometryShaderPrimitives, true, false},
+    {VK_QUERY_PIPELINE_STATISTIC_CLIPPING_INVOCATIONS_BIT, &profiler::PipelineStatistics::clippingInvocations, false, false},
+    {VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT, &profiler::PipelineStatistics::clippingPrimitives, false, false},
+    {VK_QUERY_PIPELINE_STATISTIC_FRAGMENT_SHADER_INVOCATIONS_BIT, &profiler::PipelineStatistics::fragmentShaderInvocations, false, false},
+    {VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_CONTROL_SHADER_PATCHES_BIT, &profiler::PipelineStatistics::tessControlPatches, false, true},
+    {VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_EVALUATION_SHADER_INVOCATIONS_BIT, &profiler::PipelineStatistics::tessEvaluationInvocations, false, true},
+    {VK_QUERY_PIPELINE_STATISTIC_COMPUTE_SHADER_INVOCATIONS_BIT, &profiler::PipelineStatistics::computeShaderInvocations, false, false},
+};
+
+} // namespace
+
+GpuProfiler::GpuProfiler(Device& device, profiler::Profiler& profiler, uint32_t framesInFlight)
+    : mDevice(device), mProfiler(profiler), mSlots(framesInFlight) {
+    const auto& features = device.features();
+    mTimestamps = features.timestamps;
+    mStatistics = features.pipelineStatistics;
+    mNsPerTick = device.properties().limits.timestampPeriod;
+
+    if (mTimestamps) {
+        VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+        info.queryType = VK_QUERY_TYPE_TIMESTAMP;
+        info.queryCount = 2 * kMaxPassesPerFrame * framesInFlight;
+        TESSERA_VK_CHECK(vkCreateQueryPool(device.handle(), &info, nullptr, &mTimestampPool));
+        device.setName(VK_OBJECT_TYPE_QUERY_POOL, mTimestampPool, "profiler.timestamps");
+    }
+    if (mStatistics) {
+        for (const auto& f : kFields) {
+            if (f.needsGeometry && !features.geometryShader) continue;
+            if (f.needsTessellation && !features.tessellationShader) continue;
+            mStatisticFlags |= f.bit;
+            ++mStatisticCount;
+        }
+        VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+        info.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
+        info.queryCount = kMaxPassesPerFrame * framesInFlight;
+        info.pipelineStatistics = mStatisticFlags;
+        TESSERA_VK_CHECK(vkCreateQueryPool(device.handle(), &info, nullptr, &mStatisticsPool));
+        device.setName(VK_OBJECT_TYPE_QUERY_POOL, mStatisticsPool, "profiler.pipelineStatistics");
+    }
+}
+
+GpuProfiler::~GpuProfiler() {
+    if (mTimestampPool) vkDestroyQueryPool(mDevice.handle(), mTimestampPool, nullptr);
+    if (mStatisticsPool) vkDestroyQueryPool(mDevice.handle(), mStatisticsPool, nullptr);
+}
+
+void GpuProfiler::beginFrame(VkCommandBuffer cmd, uint32_t slot, uint64_t frameIndex) {
+    mRecordingSlot = slot;
+    Slot& s = mSlots[slot];
+    s.frameIndex = frameIndex;
+    s.passes.clear();
+    s.pending = false;
+    if (mTimestampPool) vkCmdResetQueryPool(cmd, mTimestampPool, 2 * kMaxPassesPerFrame * slot, 2 * kMaxPassesPerFrame);
+    if (mStatisticsPool) vkCmdResetQueryPool(cmd, mStatisticsPool, kMaxPassesPerFrame * slot, kMaxPassesPerFrame);
+}
+
+void GpuProfiler::beginPass(VkCommandBuffer cmd, const char* name) {
+    assert(!mInPass && "GPU passes do not nest");
+    Slot& s = mSlots[mRecordingSlot];
+    assert(s.passes.size() < kMaxPassesPerFrame);
+    mInPass = true;
+    const uint32_t pass = static_cast<uint32_t>(s.passes.size());
+    s.passes.push_back({name});
+    const float color[4] = {0.3f, 0.6f, 0.9f, 1.0f};
+    mDevice.beginLabel(cmd, name, color);
+    if (mTimestampPool)
+        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, mTimestampPool,
+                             2 * (kMaxPassesPerFrame * mRecordingSlot + pass));
+    if (mStatisticsPool) vkCmdBeginQuery(cmd, mStatisticsPool, kMaxPassesPerFrame * mRecordingSlot + pass, 0);
+}
+
+void GpuProfiler::endPass(VkCommandBuffer cmd) {
+    assert(mInPass);
+    mInPass = false;
+    Slot& s = mSlots[mRecordingSlot];
+    const uint32_t pass = static_cast<uint32_t>(s.passes.size() - 1);
+    if (mStatisticsPool) vkCmdEndQuery(cmd, mStatisticsPool, kMaxPassesPerFrame * mRecordingSlot + pass);
+    if (mTimestampPool)
+        vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, mTimestampPool,
+                             2 * (kMaxPassesPerFrame * mRecordingSlot + pass) + 1);
+    mDevice.endLabel(cmd);
+}
+
+void GpuProfiler::markSubmitted(uint32_t slot, uint64_t cpuNs) {
+    mSlots[slot].submitNs = cpuNs;
+    mSlots[slot].pending = true;
+}
+
+void GpuProfiler::collect(uint32_t slot) {
+    Slot& s = mSlots[slot];
+    if (!s.pending || s.passes.empty()) return;
+    s.pending = false;
+    const uint32_t count = static_cast<uint32_t>(s.passes.size());
+
+    std::vector<uint64_t> stamps(2 * count, 0);
+    if (mTimestampPool)
+        TESSERA_VK_CHECK(vkGetQueryPoolResults(mDevice.handle(), mTimestampPool, 2 * kMaxPassesPerFrame * slot, 2 * count,
+                                               stamps.size() * sizeof(uint64_t), stamps.data(), sizeof(uint64_t),
+                                               VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    std::vector<uint64_t> stats(static_cast<size_t>(count) * mStatisticCount, 0);
+    if (mStatisticsPool)
+        TESSERA_VK_CHECK(vkGetQueryPoolResults(mDevice.handle(), mStatisticsPool, kMaxPassesPerFrame * slot, count,
+                                               stats.size() * sizeof(uint64_t), stats.data(),
+                                               mStatisticCount * sizeof(uint64_t),
+                                               VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+
+    // GPU ticks have their own epoch. The first frame's first timestamp is
+    // anchored at its CPU submission time, and every later frame reuses that
+    // offset: one monotonic GPU clock keeps frames in flight from overlapping
+    // on the GPU track, which per-frame anchoring would make them do.
+    if (!mHaveEpoch && !stamps.empty()) {
+        mGpuEpochTicks = stamps[0];
+        mGpuEpochCpuNs = s.submitNs;
+        mHaveEpoch = true;
+    }
+    for (uint32_t p = 0; p < count; ++p) {
+        profiler::GpuPassEvent event;
+        event.name = s.passes[p].name;
+        event.frame = s.frameIndex;
+        if (mTimestampPool) {
+            const double begin = static_cast<double>(int64_t(stamps[2 * p] - mGpuEpochTicks)) * mNsPerTick;
+            const double end = static_cast<double>(int64_t(stamps[2 * p + 1] - mGpuEpochTicks)) * mNsPerTick;
+            event.startNs = uint64_t(std::max(0.0, double(mGpuEpochCpuNs) + begin));
+            event.durationNs = end > begin ? static_cast<uint64_t>(end - begin) : 0;
+        } else {
+            event.startNs = s.submitNs;
+        }
+        if (mStatisticsPool) {
+            profiler::PipelineStatistics ps;
+            const uint64_t* values = &stats[static_cast<size_t>(p) * mStatisticCount];
+            uint32_t i = 0;
+            for (const auto& f : kFields)
+                if (mStatisticFlags & f.bit) ps.*(f.field) = values[i++];
+            event.stats = ps;
+        }
+        mProfiler.recordGpuPass(std::move(event));
+    }
+}
+
+} // namespace tessera::gpu

@@ -1,0 +1,140 @@
+#include "tessera/gpu/Image.h"
+
+#include "tessera/gpu/Buffer.h"
+#include "tessera/gpu/Device.h"
+#include "tessera/gpu/VulkanCheck.h"
+
+#include <cstring>
+#include <utility>
+
+namespace tessera::gpu {
+namespace {
+
+bool isDepthFormat(VkFormat f) {
+    return f == VK_FORMAT_D32_SFLOAT || f == VK_FORMAT_D16_UNORM || f == VK_FORMAT_D24_UNORM_S8_UINT ||
+           f == VK_FORMAT_D32_SFLOAT_S8_UINT;
+}
+
+} // namespace
+
+void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
+                     VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage,
+                     VkAccessFlags2 dstAccess, uint32_t mipLevels) {
+    VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    barrier.srcStageMask = srcStage;
+    barrier.srcAccessMask = srcAccess;
+    barrier.dstStageMask = dstStage;
+    barrier.dstAccessMask = dstAccess;
+    barrier.oldLayout = from;
+    barrier.newLayout = to;
+    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = image;
+    barrier.subresourceRange = {aspect, 0, mipLevels, 0, 1};
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.imageMemoryBarrierCount = 1;
+    dep.pImageMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+Image::Image(Device& device, const ImageDesc& desc) : mDevice(&device), mDesc(desc) {
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = desc.format;
+    info.extent = {desc.width, desc.height, 1};
+    info.mipLevels = desc.mipLevels;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = desc.usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    TESSERA_VK_CHECK(vkCreateImage(device.handle(), &info, nullptr, &mImage));
+    device.setName(VK_OBJECT_TYPE_IMAGE, mImage, desc.name);
+
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(device.handle(), mImage, &req);
+    mMemory = device.allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, desc.name);
+    mAllocationSize = req.size;
+    TESSERA_VK_CHECK(vkBindImageMemory(device.handle(), mImage, mMemory, 0));
+
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = mImage;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = desc.format;
+    view.subresourceRange = {aspect(), 0, desc.mipLevels, 0, 1};
+    TESSERA_VK_CHECK(vkCreateImageView(device.handle(), &view, nullptr, &mView));
+    device.setName(VK_OBJECT_TYPE_IMAGE_VIEW, mView, desc.name + ".view");
+}
+
+VkImageAspectFlags Image::aspect() const {
+    return isDepthFormat(mDesc.format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+}
+
+Image::~Image() { reset(); }
+
+Image::Image(Image&& other) noexcept { *this = std::move(other); }
+
+Image& Image::operator=(Image&& other) noexcept {
+    if (this != &other) {
+        reset();
+        mDevice = std::exchange(other.mDevice, nullptr);
+        mDesc = other.mDesc;
+        mImage = std::exchange(other.mImage, VK_NULL_HANDLE);
+        mView = std::exchange(other.mView, VK_NULL_HANDLE);
+        mMemory = std::exchange(other.mMemory, VK_NULL_HANDLE);
+        mAllocationSize = std::exchange(other.mAllocationSize, 0);
+    }
+    return *this;
+}
+
+void Image::reset() {
+    if (!mDevice) return;
+    vkDestroyImageView(mDevice->handle(), mView, nullptr);
+    vkDestroyImage(mDevice->handle(), mImage, nullptr);
+    mDevice->free(mMemory, mAllocationSize);
+    mDevice = nullptr;
+    mImage = VK_NULL_HANDLE;
+    mView = VK_NULL_HANDLE;
+    mMemory = VK_NULL_HANDLE;
+}
+
+void Image::deferredReset() {
+    if (!mDevice) return;
+    Device* device = mDevice;
+    VkImage image = mImage;
+    VkImageView view = mView;
+    VkDeviceMemory memory = mMemory;
+    VkDeviceSize size = mAllocationSize;
+    device->deferDestroy([=] {
+        vkDestroyImageView(device->handle(), view, nullptr);
+        vkDestroyImage(device->handle(), image, nullptr);
+        device->free(memory, size);
+    });
+    mDevice = nullptr;
+    mImage = VK_NULL_HANDLE;
+    mView = VK_NULL_HANDLE;
+    mMemory = VK_NULL_HANDLE;
+}
+
+void Image::upload(std::span<const std::byte> texels, VkImageLayout finalLayout) {
+    Buffer staging(*mDevice, texels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::CpuToGpu,
+                   mDesc.name + ".staging");
+    std::memcpy(staging.mapped(), texels.data(), texels.size());
+    mDevice->submitImmediate(
+        [&](VkCommandBuffer cmd) {
+            transitionImage(cmd, mImage, aspect(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                            VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT,
+                            VK_ACCESS_2_TRANSFER_WRITE_BIT, mDesc.mipLevels);
+            VkBufferImageCopy region{};
+            region.imageSubresource = {aspect(), 0, 0, 1};
+            region.imageExtent = {mDesc.width, mDesc.height, 1};
+            vkCmdCopyBufferToImage(cmd, staging.handle(), mImage, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+            transitionImage(cmd, mImage, aspect(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, finalLayout,
+                            VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                            VK_ACCESS_2_MEMORY_READ_BIT, mDesc.mipLevels);
+        },
+        "upload.image");
+}
+
+} // namespace tessera::gpu

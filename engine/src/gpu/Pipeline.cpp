@@ -1,0 +1,112 @@
+#include "tessera/gpu/Pipeline.h"
+
+#include "tessera/gpu/Device.h"
+#include "tessera/gpu/PipelineLayout.h"
+#include "tessera/gpu/VulkanCheck.h"
+
+#include <cassert>
+#include <utility>
+
+namespace tessera::gpu {
+
+Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) : mDevice(&device) {
+    assert(desc.layout);
+    std::vector<VkShaderModule> modules;
+    std::vector<VkPipelineShaderStageCreateInfo> stages;
+    for (const auto& s : desc.stages) {
+        VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+        moduleInfo.codeSize = s.spirv.size_bytes();
+        moduleInfo.pCode = s.spirv.data();
+        VkShaderModule module = VK_NULL_HANDLE;
+        TESSERA_VK_CHECK(vkCreateShaderModule(device.handle(), &moduleInfo, nullptr, &module));
+        device.setName(VK_OBJECT_TYPE_SHADER_MODULE, module, desc.name + ".shader" + std::to_string(stages.size()));
+        modules.push_back(module);
+        VkPipelineShaderStageCreateInfo stage{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+        stage.stage = s.stage;
+        stage.module = module;
+        stage.pName = "main";
+        stages.push_back(stage);
+    }
+
+    VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    vertexInput.vertexBindingDescriptionCount = static_cast<uint32_t>(desc.vertexBindings.size());
+    vertexInput.pVertexBindingDescriptions = desc.vertexBindings.data();
+    vertexInput.vertexAttributeDescriptionCount = static_cast<uint32_t>(desc.vertexAttributes.size());
+    vertexInput.pVertexAttributeDescriptions = desc.vertexAttributes.data();
+
+    VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    assembly.topology = desc.topology;
+
+    VkPipelineTessellationStateCreateInfo tessellation{VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
+    tessellation.patchControlPoints = desc.patchControlPoints;
+
+    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+
+    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    raster.rasterizerDiscardEnable = desc.rasterizerDiscard;
+    raster.polygonMode = desc.polygonMode;
+    raster.cullMode = desc.cullMode;
+    raster.frontFace = desc.frontFace;
+    raster.lineWidth = 1.0f;
+
+    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+
+    VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    depth.depthTestEnable = desc.depthTest;
+    depth.depthWriteEnable = desc.depthWrite;
+    depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+
+    std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
+    for (auto& b : blends) b.colorWriteMask = 0xF;
+    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    blend.attachmentCount = static_cast<uint32_t>(blends.size());
+    blend.pAttachments = blends.data();
+
+    const VkDynamicState dynamicStates[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dynamic.dynamicStateCount = 2;
+    dynamic.pDynamicStates = dynamicStates;
+
+    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+    rendering.colorAttachmentCount = static_cast<uint32_t>(desc.colorFormats.size());
+    rendering.pColorAttachmentFormats = desc.colorFormats.data();
+    rendering.depthAttachmentFormat = desc.depthFormat;
+
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
+    info.stageCount = static_cast<uint32_t>(stages.size());
+    info.pStages = stages.data();
+    info.pVertexInputState = &vertexInput;
+    info.pInputAssemblyState = &assembly;
+    info.pTessellationState = desc.patchControlPoints ? &tessellation : nullptr;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = desc.depthFormat != VK_FORMAT_UNDEFINED ? &depth : nullptr;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamic;
+    info.layout = desc.layout->handle();
+    TESSERA_VK_CHECK(vkCreateGraphicsPipelines(device.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &mPipeline));
+    device.setName(VK_OBJECT_TYPE_PIPELINE, mPipeline, desc.name);
+    // Modules are only needed while the pipeline is compiled.
+    for (auto m : modules) vkDestroyShaderModule(device.handle(), m, nullptr);
+}
+
+Pipeline::~Pipeline() {
+    if (mDevice) vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
+}
+
+Pipeline::Pipeline(Pipeline&& other) noexcept { *this = std::move(other); }
+
+Pipeline& Pipeline::operator=(Pipeline&& other) noexcept {
+    if (this != &other) {
+        if (mDevice) vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
+        mDevice = std::exchange(other.mDevice, nullptr);
+        mPipeline = std::exchange(other.mPipeline, VK_NULL_HANDLE);
+    }
+    return *this;
+}
+
+} // namespace tessera::gpu

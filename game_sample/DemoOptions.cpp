@@ -1,0 +1,134 @@
+#include "DemoOptions.h"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+namespace tessera::demo {
+namespace {
+
+Result<uint32_t> parseCount(const std::string& flag, const std::string& text, uint32_t min, uint32_t max) {
+    uint32_t value = 0;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size() || value < min || value > max)
+        return fail(flag, " expects a whole number from ", std::to_string(min), " to ", std::to_string(max), ", got \"",
+                    text, "\"");
+    return value;
+}
+
+Result<glm::vec3> parseColor(const std::string& text) {
+    glm::vec3 color{};
+    std::stringstream stream(text);
+    std::string part;
+    int n = 0;
+    while (std::getline(stream, part, ',')) {
+        char* end = nullptr;
+        const float v = std::strtof(part.c_str(), &end);
+        if (n >= 3 || part.empty() || *end != '\0' || !std::isfinite(v) || v < 0.0f || v > 1.0f)
+            return fail("--clear-color expects r,g,b with each in [0,1], got \"", text, "\"");
+        color[n++] = v;
+    }
+    if (n != 3) return fail("--clear-color expects r,g,b with each in [0,1], got \"", text, "\"");
+    return color;
+}
+
+} // namespace
+
+const char* helpText() {
+    return R"(usage: tessera-demo [options]
+
+Renders a scripted flythrough over tessellated terrain. Headless (offscreen)
+by default, on the best Vulkan device (a GPU, else lavapipe).
+
+Backend and device:
+  --backend NAME        r2vb | streamout | hulldomain | null (default: the
+                        most capable backend the device can run)
+  --list-backends       list backends and their capabilities on the device
+  --device NAME|INDEX   pick a Vulkan device by index or name substring
+  --list-devices        list Vulkan devices
+  --plugin-dir DIR      also search DIR for backend plugins (repeatable)
+  --validation          enable the Khronos validation layer; print and count
+                        every message, fail at exit if there were any
+
+Scene:
+  --heightmap FILE      8- or 16-bit grayscale PNG height map (default: the
+                        generated content/terrain/height.png)
+  --content DIR         content directory
+  --seed N              camera path seed (default 1)
+  --camera x,y,z,yaw,pitch  fixed view (degrees) instead of the flythrough
+  --wireframe           draw wireframe
+
+Output:
+  --width N --height N  render size (default 1280x720)
+  --clear-color r,g,b   background colour, components in [0,1]
+  --frames N            frames to render (default 60 headless; until closed
+                        with --window)
+  --window              open a window (GLFW) instead of rendering headless
+  --screenshot FILE     write the last frame as PNG
+  --capture FILE        write a Chrome trace (Perfetto, chrome://tracing)
+  --benchmark FILE      write per-pass min/median/max GPU ms as JSON
+  --warmup N            frames run before measuring (default 0)
+  --help                this text
+)";
+}
+
+Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
+    DemoOptions o;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& flag = args[i];
+        auto value = [&]() -> Result<std::string> {
+            if (i + 1 >= args.size() || args[i + 1].rfind("--", 0) == 0) return fail(flag, " needs a value");
+            return args[++i];
+        };
+#define TESSERA_TAKE(var)                        \
+    auto var##Value = value();                   \
+    if (!var##Value) return var##Value.error();  \
+    const std::string& var = var##Value.value()
+#define TESSERA_TAKE_COUNT(field, min, max)                         \
+    {                                                               \
+        TESSERA_TAKE(text);                                         \
+        auto n = parseCount(flag, text, min, max);                  \
+        if (!n) return n.error();                                   \
+        o.field = n.value();                                        \
+    }
+        if (flag == "--help" || flag == "-h") o.help = true;
+        else if (flag == "--list-backends") o.listBackends = true;
+        else if (flag == "--list-devices") o.listDevices = true;
+        else if (flag == "--validation") o.validation = true;
+        else if (flag == "--window") o.window = true;
+        else if (flag == "--wireframe") o.wireframe = true;
+        else if (flag == "--backend") { TESSERA_TAKE(v); o.backend = v; }
+        else if (flag == "--device") { TESSERA_TAKE(v); o.device = v; }
+        else if (flag == "--plugin-dir") { TESSERA_TAKE(v); o.pluginDirs.push_back(v); }
+        else if (flag == "--content") { TESSERA_TAKE(v); o.contentDir = v; }
+        else if (flag == "--heightmap") { TESSERA_TAKE(v); o.heightmap = v; }
+        else if (flag == "--screenshot") { TESSERA_TAKE(v); o.screenshot = v; }
+        else if (flag == "--capture") { TESSERA_TAKE(v); o.capture = v; }
+        else if (flag == "--benchmark") { TESSERA_TAKE(v); o.benchmark = v; }
+        else if (flag == "--width") TESSERA_TAKE_COUNT(width, 16, 16384)
+        else if (flag == "--height") TESSERA_TAKE_COUNT(height, 16, 16384)
+        else if (flag == "--frames") TESSERA_TAKE_COUNT(frames, 1, 10000000)
+        else if (flag == "--warmup") TESSERA_TAKE_COUNT(warmup, 0, 1000000)
+        else if (flag == "--seed") TESSERA_TAKE_COUNT(seed, 0, UINT32_MAX)
+        else if (flag == "--clear-color") {
+            TESSERA_TAKE(v);
+            auto c = parseColor(v);
+            if (!c) return c.error();
+            o.clearColor = c.value();
+        } else if (flag == "--camera") {
+            TESSERA_TAKE(v);
+            auto pose = scene::parseCameraPose(v);
+            if (!pose) return pose.error();
+            o.camera = pose.value();
+        } else {
+            return fail("unknown option \"", flag, "\"; run with --help for the list");
+        }
+#undef TESSERA_TAKE_COUNT
+#undef TESSERA_TAKE
+    }
+    if (o.window && !o.screenshot.empty() && o.frames == 0)
+        return fail("--screenshot with --window needs --frames N to know which frame to capture");
+    return o;
+}
+
+} // namespace tessera::demo

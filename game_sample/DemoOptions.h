@@ -1,0 +1,48 @@
+#pragma once
+/// @file DemoOptions.h
+/// The demo's command line. Every flag is documented in helpText(); parsing
+/// never exits, it returns an error naming the bad flag.
+
+#include "tessera/core/Result.h"
+#include "tessera/scene/CameraPose.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace tessera::demo {
+
+struct DemoOptions {
+    std::string backend;                ///< empty: best backend the device runs
+    std::string device;                 ///< --device NAME|INDEX
+    std::vector<std::string> pluginDirs; ///< --plugin-dir (repeatable)
+    std::string contentDir;             ///< --content DIR
+    std::string heightmap;              ///< --heightmap FILE (8/16-bit gray PNG)
+    bool listBackends = false;
+    bool listDevices = false;
+    bool help = false;
+    bool validation = false;
+    bool window = false;
+    bool wireframe = false;
+    uint32_t width = 1280;
+    uint32_t height = 720;
+    uint32_t frames = 0;                ///< 0: the mode's default
+    uint32_t warmup = 0;
+    uint32_t seed = 1;
+    glm::vec3 clearColor{0.55f, 0.68f, 0.85f};
+    std::optional<scene::CameraPose> camera; ///< --camera fixes the view
+    std::string screenshot;             ///< PNG of the last frame
+    std::string capture;                ///< Chrome trace JSON
+    std::string benchmark;              ///< benchmark JSON
+};
+
+/// Parses argv (without argv[0]).
+Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args);
+
+/// The --help text.
+const char* helpText();
+
+} // namespace tessera::demo

@@ -1,0 +1,20 @@
+// tessera-demo: the crowd/terrain demo's entry point.
+#include "DemoApp.h"
+#include "DemoOptions.h"
+#include "tessera/core/Log.h"
+
+#include <cstdio>
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    auto options = tessera::demo::parseDemoOptions(args);
+    if (!options) {
+        tessera::log::error(options.error().message);
+        return 2;
+    }
+    if (options->help) {
+        std::fputs(tessera::demo::helpText(), stdout);
+        return 0;
+    }
+    return tessera::demo::runDemo(options.value());
+}

@@ -1,0 +1,38 @@
+// The smallest complete backend: copy this file to start a new one (see
+// README.md). It draws nothing and needs no GPU.
+#include "tessera/backend/PluginApi.h"
+
+namespace {
+
+using namespace tessera;
+
+class TemplateBackend final : public backend::Backend {
+public:
+    backend::BackendCapabilities capabilities(const backend::DeviceFeatures*) override {
+        backend::BackendCapabilities caps;
+        caps.name = "template";
+        caps.description = "template for new backends (draws nothing)";
+        caps.requiresGpu = false;
+        return caps;
+    }
+    Status initialize(const backend::BackendInitInfo&) override { return {}; }
+    void shutdown() override {}
+    Result<backend::TerrainHandle> createTerrain(const backend::TerrainDesc&) override {
+        return backend::TerrainHandle{0};
+    }
+    void destroyTerrain(backend::TerrainHandle) override {}
+    void beginFrame(const backend::FrameInfo& frame) override { mReport = {frame.frameIndex, 0, 0, 0}; }
+    void drawTerrain(backend::TerrainHandle, const backend::TerrainDrawInfo&) override {}
+    void endFrame() override {}
+    backend::FrameReport lastFrameReport() override { return mReport; }
+
+private:
+    backend::FrameReport mReport;
+};
+
+backend::Backend* create() { return new TemplateBackend(); }
+void destroy(backend::Backend* b) { delete b; }
+
+} // namespace
+
+TESSERA_REGISTER_PLUGIN(registry) { registry.registerBackend({"template", &create, &destroy}); }

@@ -1,0 +1,69 @@
+// Bad input gets a clear error, a non-zero exit and never a crash.
+#include "DemoProcess.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+using namespace tessera::test;
+
+namespace {
+
+void expectCleanFailure(const std::vector<std::string>& args, const std::string& expected) {
+    auto run = runDemo(args);
+    EXPECT_GT(run.exitCode, 0) << "crashed or succeeded: " << run.output;
+    EXPECT_NE(run.output.find(expected), std::string::npos) << "expected \"" << expected << "\" in: " << run.output;
+}
+
+} // namespace
+
+TEST(DemoCli, UnknownBackendNamesTheAvailableOnes) {
+    auto run = runDemo({"--backend", "nope"});
+    EXPECT_GT(run.exitCode, 0) << run.output;
+    for (const char* name : {"unknown backend \"nope\"", "hulldomain", "null", "r2vb", "streamout"})
+        EXPECT_NE(run.output.find(name), std::string::npos) << name << " missing from: " << run.output;
+}
+
+TEST(DemoCli, BadFlagsFailClearly) {
+    expectCleanFailure({"--frobnicate"}, "unknown option \"--frobnicate\"");
+    expectCleanFailure({"--frames"}, "--frames needs a value");
+    expectCleanFailure({"--frames", "many"}, "--frames expects a whole number");
+    expectCleanFailure({"--width", "0"}, "--width expects a whole number from 16");
+    expectCleanFailure({"--camera", "1,2"}, "--camera");
+    expectCleanFailure({"--clear-color", "1,0"}, "--clear-color expects r,g,b");
+    expectCleanFailure({"--clear-color", "2,0,0"}, "--clear-color expects r,g,b");
+    expectCleanFailure({"--device", "no-such-gpu", "--backend", "r2vb"}, "--device no-such-gpu");
+}
+
+TEST(DemoCli, BadHeightMapNamesTheFile) {
+    const std::string bogus = std::string(TESSERA_TEST_OUTPUT_DIR) + "/not_a_png.png";
+    std::ofstream(bogus) << "definitely not a PNG";
+    expectCleanFailure({"--backend", "null", "--heightmap", bogus}, "not_a_png.png");
+    expectCleanFailure({"--backend", "null", "--heightmap", "/nonexistent/h.png"}, "/nonexistent/h.png");
+}
+
+TEST(DemoCli, ScreenshotToUnwritablePathFailsClearly) {
+    expectCleanFailure({"--backend", "r2vb", "--frames", "1", "--width", "64", "--height", "64", "--screenshot",
+                        "/proc/forbidden/shot.png"},
+                       "/proc/forbidden/shot.png");
+}
+
+TEST(DemoCli, ListBackendsShowsCapabilitiesOnTheDevice) {
+    auto run = runDemo({"--list-backends"});
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    for (const char* text : {"device:", "hulldomain", "hardware", "64.00", "streamout", "emulated", "14.99", "r2vb", "null"})
+        EXPECT_NE(run.output.find(text), std::string::npos) << text << " missing from: " << run.output;
+}
+
+TEST(DemoCli, ListDevicesShowsLavapipeOrAGpu) {
+    auto run = runDemo({"--list-devices"});
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("0: "), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("[default]"), std::string::npos) << run.output;
+}
+
+TEST(DemoCli, HelpExitsZero) {
+    auto run = runDemo({"--help"});
+    EXPECT_EQ(run.exitCode, 0);
+    EXPECT_NE(run.output.find("--backend"), std::string::npos);
+}

@@ -1,0 +1,68 @@
+// Renders a fixed view headless on every backend under the validation layer
+// and compares it with the approved golden image (tests/golden/<name>.png;
+// approve new ones with tools/approve_goldens.sh).
+#include "DemoProcess.h"
+#include "ImageCompare.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace tessera;
+using namespace tessera::test;
+
+namespace {
+
+const std::string kOut = TESSERA_TEST_OUTPUT_DIR;
+// A view across a valley towards the mountains, far enough out that every
+// tile is in play and near enough that the shading detail shows.
+const std::vector<std::string> kFixedView = {"--width", "320", "--height", "180", "--frames", "3", "--camera",
+                                             "1800,900,6800,-30,-16"};
+
+class GoldenImage : public ::testing::TestWithParam<std::string> {};
+
+} // namespace
+
+TEST_P(GoldenImage, MatchesApprovedImageWithNoValidationMessages) {
+    const std::string backend = GetParam();
+    const std::string shot = kOut + "/golden_" + backend + ".png";
+    std::filesystem::remove(shot);
+    auto args = kFixedView;
+    args.insert(args.end(), {"--backend", backend, "--validation", "--screenshot", shot});
+    auto run = runDemo(args);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("validation messages: 0"), std::string::npos) << run.output;
+
+    auto actual = readPng(shot);
+    ASSERT_TRUE(actual.ok()) << actual.error().message;
+    const std::string goldenPath = std::string(TESSERA_GOLDEN_DIR) + "/" + backend + ".png";
+    auto golden = readPng(goldenPath);
+    ASSERT_TRUE(golden.ok()) << "no golden image for " << backend << " (" << golden.error().message
+                             << "); approve " << shot << " with tools/approve_goldens.sh";
+    auto cmp = compareImages(actual.value(), golden.value(), {}, kOut + "/golden_" + backend + ".diff.png");
+    EXPECT_TRUE(cmp.match) << backend << ": " << cmp.message;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryBackend, GoldenImage, ::testing::Values("r2vb", "streamout", "hulldomain"),
+                         [](const auto& info) { return info.param; });
+
+TEST(DemoRun, FlythroughIsDeterministicForASeed) {
+    auto shot = [&](const std::string& name) {
+        const std::string path = kOut + "/" + name;
+        auto run = runDemo({"--width", "160", "--height", "90", "--frames", "4", "--seed", "7", "--backend", "r2vb",
+                            "--screenshot", path});
+        EXPECT_EQ(run.exitCode, 0) << run.output;
+        return readPng(path);
+    };
+    auto a = shot("seed7_a.png");
+    auto b = shot("seed7_b.png");
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_EQ(a->pixels, b->pixels);
+}
+
+TEST(DemoRun, NullBackendRunsFramesWithoutAGpu) {
+    auto run = runDemo({"--backend", "null", "--frames", "5", "--validation"});
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    // The null backend creates no Vulkan instance, so there is nothing to validate.
+    EXPECT_NE(run.output.find("validation messages: 0"), std::string::npos) << run.output;
+}

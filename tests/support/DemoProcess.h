@@ -1,0 +1,40 @@
+#pragma once
+/// @file DemoProcess.h
+/// Runs tessera-demo as a child process and captures its output.
+
+#include <cstdio>
+#include <string>
+#include <sys/wait.h>
+#include <vector>
+
+namespace tessera::test {
+
+struct ProcessResult {
+    int exitCode = -1;
+    std::string output; ///< stdout and stderr together
+};
+
+inline std::string shellQuote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+/// Runs the demo with `args`; the exit code is -1 if it did not exit normally
+/// (a crash), so tests can tell a clean failure from a crash.
+inline ProcessResult runDemo(const std::vector<std::string>& args) {
+    std::string command = shellQuote(TESSERA_DEMO_EXE);
+    for (const auto& a : args) command += " " + shellQuote(a);
+    command += " 2>&1";
+    ProcessResult result;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    char buffer[4096];
+    size_t n;
+    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
+    const int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+} // namespace tessera::test
