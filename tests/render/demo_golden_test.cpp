@@ -60,6 +60,15 @@ TEST(DemoRun, FlythroughIsDeterministicForASeed) {
     EXPECT_EQ(a->pixels, b->pixels);
 }
 
+TEST(DemoRun, AnyValidationMessageFailsTheRun) {
+    auto run = runDemo({"--plugin-dir", TESSERA_TEST_PLUGIN_DIR "/demo", "--backend", "invalid-usage", "--frames", "2",
+                        "--width", "64", "--height", "64", "--validation"});
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find("VUID-vkCmdSetViewport"), std::string::npos) << run.output;
+    EXPECT_EQ(run.output.find("validation messages: 0"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("validation messages: "), std::string::npos) << run.output;
+}
+
 TEST(DemoRun, NullBackendRunsFramesWithoutAGpu) {
     auto run = runDemo({"--backend", "null", "--frames", "5", "--validation"});
     ASSERT_EQ(run.exitCode, 0) << run.output;

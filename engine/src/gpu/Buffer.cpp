@@ -61,18 +61,10 @@ void Buffer::reset() {
 
 void Buffer::deferredReset() {
     if (!mDevice) return;
-    Device* device = mDevice;
-    VkBuffer buffer = mBuffer;
-    VkDeviceMemory memory = mMemory;
-    VkDeviceSize size = mAllocationSize;
-    device->deferDestroy([device, buffer, memory, size] {
-        vkDestroyBuffer(device->handle(), buffer, nullptr);
-        device->free(memory, size);
-    });
-    mDevice = nullptr;
-    mBuffer = VK_NULL_HANDLE;
-    mMemory = VK_NULL_HANDLE;
-    mMapped = nullptr;
+    // Move the handles into a heap copy whose destructor runs once the frame
+    // now recording has retired; this object is empty from here on.
+    auto* doomed = new Buffer(std::move(*this));
+    doomed->mDevice->deferDestroy([doomed] { delete doomed; });
 }
 
 void Buffer::upload(std::span<const std::byte> bytes, VkDeviceSize offset) {

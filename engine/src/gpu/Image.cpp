@@ -101,20 +101,10 @@ void Image::reset() {
 
 void Image::deferredReset() {
     if (!mDevice) return;
-    Device* device = mDevice;
-    VkImage image = mImage;
-    VkImageView view = mView;
-    VkDeviceMemory memory = mMemory;
-    VkDeviceSize size = mAllocationSize;
-    device->deferDestroy([=] {
-        vkDestroyImageView(device->handle(), view, nullptr);
-        vkDestroyImage(device->handle(), image, nullptr);
-        device->free(memory, size);
-    });
-    mDevice = nullptr;
-    mImage = VK_NULL_HANDLE;
-    mView = VK_NULL_HANDLE;
-    mMemory = VK_NULL_HANDLE;
+    // Move the handles into a heap copy whose destructor runs once the frame
+    // now recording has retired; this object is empty from here on.
+    auto* doomed = new Image(std::move(*this));
+    doomed->mDevice->deferDestroy([doomed] { delete doomed; });
 }
 
 void Image::upload(std::span<const std::byte> texels, VkImageLayout finalLayout) {
