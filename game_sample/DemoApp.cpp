@@ -103,7 +103,7 @@ Status writeOutputs(const DemoOptions& options, Session& s, const std::vector<ui
         info.width = width;
         info.height = height;
         info.warmupFrames = options.warmup;
-        info.frames = frames - options.warmup;
+        info.frames = frames > options.warmup ? frames - options.warmup : 0;
         if (auto w = profiler::writeBenchmarkJson(summary, info, profiler, options.benchmark); !w) return w;
         std::printf("%s", profiler::formatTable(summary).c_str());
         log::info("wrote " + options.benchmark);
@@ -146,10 +146,15 @@ Status run(const DemoOptions& options, Session& s) {
     scene::Camera camera;
 
     const bool windowed = s.swapchain != nullptr;
-    const uint32_t frames = options.frames ? options.frames : (windowed ? UINT32_MAX : kDefaultHeadlessFrames);
+    // --warmup frames run first and are discarded from the benchmark; --frames
+    // counts the frames after them.
+    const uint32_t measured =
+        options.frames ? options.frames : (windowed ? UINT32_MAX - options.warmup : kDefaultHeadlessFrames);
+    const uint32_t frames = options.warmup + measured;
     std::vector<uint32_t> visible;
     std::vector<uint8_t> pixels;
-    for (uint32_t frame = 0; frame < frames; ++frame) {
+    uint32_t rendered = 0;
+    for (uint32_t frame = 0; frame < frames; ++frame, ++rendered) {
         if (windowed) {
             if (s.swapchain->pollEvents()) s.swapchain->recreate();
             if (s.swapchain->shouldClose()) break;
@@ -199,7 +204,6 @@ Status run(const DemoOptions& options, Session& s) {
     }
     backend.destroyTerrain(s.terrain);
     backend.shutdown();
-    const uint32_t rendered = frames == UINT32_MAX ? uint32_t(profiler.currentFrame() + 1) : frames;
     return writeOutputs(options, s, pixels, width, height, rendered);
 }
 

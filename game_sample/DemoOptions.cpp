@@ -61,13 +61,13 @@ Scene:
 Output:
   --width N --height N  render size (default 1280x720)
   --clear-color r,g,b   background colour, components in [0,1]
-  --frames N            frames to render (default 60 headless; until closed
-                        with --window)
+  --frames N            frames to render after the warm-up (default 60
+                        headless; until closed with --window)
   --window              open a window (GLFW) instead of rendering headless
   --screenshot FILE     write the last frame as PNG
   --capture FILE        write a Chrome trace (Perfetto, chrome://tracing)
   --benchmark FILE      write per-pass min/median/max GPU ms as JSON
-  --warmup N            frames run before measuring (default 0)
+  --warmup N            frames run first and left out of --benchmark (default 0)
   --help                this text
 )";
 }
