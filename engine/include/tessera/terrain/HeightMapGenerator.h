@@ -17,13 +17,13 @@
 ///  4. "normalise": stretched to the full 0..65535 range.
 ///
 /// Determinism: the output depends only on the settings other than
-/// threadCount; the same binary gives identical samples for the same settings
-/// on any number of threads. Work is split into pieces whose results never
-/// depend on each other within a step (rows; same-colour erosion tiles whose
-/// reach cannot overlap), and every float sum runs in a fixed order inside one
-/// piece. Randomness comes only from tessera::Random, and no libm
-/// transcendental function is used, so other x86-64/ARM64 builds with the
-/// same compiler settings agree too.
+/// threadCount; it is bit-identical for any number of threads. Work is split
+/// into pieces whose results never depend on each other within a step (rows;
+/// same-colour erosion tiles whose reach cannot overlap), and every float sum
+/// runs in a fixed order inside one piece. Randomness comes only from
+/// tessera::Random, and only exactly rounded float operations are used (no
+/// libm transcendentals; the build disables FMA contraction for these
+/// sources), so any IEEE-conforming build gives the same bytes as well.
 ///
 /// The terrain is shaped as if it spanned 8192 m with 600 m of relief (the
 /// default TerrainScale at 2048 samples), whatever the size: a smaller map is
