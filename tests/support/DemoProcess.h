@@ -23,7 +23,12 @@ inline std::string shellQuote(const std::string& s) {
 /// Runs the demo with `args`; the exit code is -1 if it did not exit normally
 /// (a crash), so tests can tell a clean failure from a crash.
 inline ProcessResult runDemo(const std::vector<std::string>& args) {
-    std::string command = shellQuote(TESSERA_DEMO_EXE);
+    // Under ./tessera test --sanitize the demo still runs with ASan and UBSan,
+    // but without leak checking: the Vulkan loader unloads the driver before
+    // exit, so the driver's own process-lifetime allocations show up as leaks
+    // from "<unknown module>" that no suppression can name. Leak checking stays
+    // on for the unit tests, which cover the engine without a driver.
+    std::string command = "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" " + shellQuote(TESSERA_DEMO_EXE);
     for (const auto& a : args) command += " " + shellQuote(a);
     command += " 2>&1";
     ProcessResult result;
