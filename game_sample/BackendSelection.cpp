@@ -4,6 +4,7 @@
 #include "tessera/gpu/Swapchain.h"
 
 #include <cstdio>
+#include <optional>
 
 namespace tessera::demo {
 namespace {
@@ -84,24 +85,17 @@ Status listBackends(const DemoOptions& options) {
     backend::BackendRegistry registry;
     for (const auto& error : loader.loadAll(registry)) log::warning(error.message);
 
-    std::unique_ptr<gpu::Instance> instance;
-    std::unique_ptr<gpu::Device> device;
-    const backend::DeviceFeatures* features = nullptr;
+    std::optional<backend::DeviceFeatures> deviceFeatures;
     if (auto created = makeInstance(options); created) {
-        instance = std::move(created.value());
-        if (auto physical = instance->selectDevice(options.device); physical) {
-            std::printf("device: %s (%s)\n\n", physical->features.deviceName.c_str(),
-                        gpu::deviceTypeName(physical->type));
-            static backend::DeviceFeatures sFeatures;
-            sFeatures = physical->features;
-            features = &sFeatures;
-        } else {
-            return physical.error();
-        }
+        auto physical = created.value()->selectDevice(options.device);
+        if (!physical) return physical.error();
+        std::printf("device: %s (%s)\n\n", physical->features.deviceName.c_str(), gpu::deviceTypeName(physical->type));
+        deviceFeatures = physical->features;
     } else {
         std::printf("device: none (%s)\n\n", created.error().message.c_str());
     }
 
+    const backend::DeviceFeatures* features = deviceFeatures ? &*deviceFeatures : nullptr;
     std::printf("%-11s %-9s %-10s %-4s %-4s %-7s %-6s %s\n", "backend", "status", "tess", "xfb", "geom", "compute",
                 "max tf", "description");
     for (const auto& name : registry.names()) {
