@@ -32,6 +32,42 @@ Result<glm::vec3> parseColor(const std::string& text) {
     return color;
 }
 
+std::string formatNumber(float v) {
+    std::ostringstream text;
+    text << v;
+    return text.str();
+}
+
+Result<float> parseNumber(const std::string& flag, const std::string& text, float min, float max) {
+    char* end = nullptr;
+    const float v = std::strtof(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(v) || v < min || v > max)
+        return fail(flag, " expects a number from ", formatNumber(min), " to ", formatNumber(max), ", got \"", text, "\"");
+    return v;
+}
+
+Result<terrain::CraterSplat> parseSplat(const std::string& text) {
+    std::vector<float> values;
+    std::stringstream stream(text);
+    std::string part;
+    bool numbers = true;
+    while (std::getline(stream, part, ',')) {
+        char* end = nullptr;
+        const float v = std::strtof(part.c_str(), &end);
+        numbers = numbers && !part.empty() && *end == '\0' && std::isfinite(v);
+        values.push_back(v);
+    }
+    const bool shaped = numbers && (values.size() == 3 || values.size() == 4);
+    if (!shaped || values[2] <= 0.0f || (values.size() == 4 && values[3] < 0.0f))
+        return fail("--splat expects x,z,radius[,depth] in metres with radius > 0 and depth >= 0, got \"", text, "\"");
+    terrain::CraterSplat splat;
+    splat.center = {values[0], values[1]};
+    splat.radius = values[2];
+    splat.profile.depth = values.size() == 4 ? values[3] : 0.22f * values[2];
+    splat.profile.rimHeight = 0.06f * values[2];
+    return splat;
+}
+
 } // namespace
 
 const char* helpText() {
@@ -57,6 +93,25 @@ Scene:
   --seed N              camera path seed (default 1)
   --camera x,y,z,yaw,pitch  fixed view (degrees) instead of the flythrough
   --wireframe           draw wireframe
+  --meteors N           a meteor shower of N impacts during the flythrough,
+                        deterministic by --seed; craters deform the terrain
+  --splat x,z,r[,depth] stamp a crater (metres) before the first frame
+                        (repeatable; depth defaults to 0.22 r)
+
+Terrain tessellation (the first paper's Table 2 modes):
+  --terrain-mode M      lowres | continuous | adaptive (default: adaptive
+                        where the backend draws it, else lowres)
+  --tess-metric M       adaptive metric: screen (edge length in pixels),
+                        distance, silhouette, detail (height-map error in
+                        pixels); default screen
+  --tess-target PX      pixels per edge (screen, silhouette) or of error
+                        (detail); default 16, or 2 for detail
+  --tess-distance M     distance metric: metres where the level reaches 1
+                        (default 4000)
+  --tess-level L        continuous mode's level, 1 to the backend's maximum
+                        (default 15)
+  --tess-max L          largest adaptive level (default: the backend's
+                        maximum, 64 hardware, 14.99 emulated)
 
 Output:
   --width N --height N  render size (default 1280x720)
@@ -68,6 +123,11 @@ Output:
   --capture FILE        write a Chrome trace (Perfetto, chrome://tracing)
   --benchmark FILE      write per-pass min/median/max GPU ms as JSON
   --warmup N            frames run first and left out of --benchmark (default 0)
+  --dump-heights PREFIX after the last frame write the GPU and CPU copies of
+                        the height map as PREFIX.gpu.png and PREFIX.cpu.png
+  --bench terrain       run the Table 2 benchmark (every mode, a far and a
+                        close-up view, every backend that draws the modes)
+  --out FILE            where --bench writes its JSON (default: stdout)
   --help                this text
 )";
 }
@@ -84,6 +144,13 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
     auto var##Value = value();                   \
     if (!var##Value) return var##Value.error();  \
     const std::string& var = var##Value.value()
+#define TESSERA_TAKE_NUMBER(field, min, max)                        \
+    {                                                               \
+        TESSERA_TAKE(text);                                         \
+        auto n = parseNumber(flag, text, min, max);                 \
+        if (!n) return n.error();                                   \
+        o.field = n.value();                                        \
+    }
 #define TESSERA_TAKE_COUNT(field, min, max)                         \
     {                                                               \
         TESSERA_TAKE(text);                                         \
@@ -105,6 +172,40 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         else if (flag == "--screenshot") { TESSERA_TAKE(v); o.screenshot = v; }
         else if (flag == "--capture") { TESSERA_TAKE(v); o.capture = v; }
         else if (flag == "--benchmark") { TESSERA_TAKE(v); o.benchmark = v; }
+        else if (flag == "--dump-heights") { TESSERA_TAKE(v); o.dumpHeights = v; }
+        else if (flag == "--out") { TESSERA_TAKE(v); o.benchOut = v; }
+        else if (flag == "--bench") {
+            TESSERA_TAKE(v);
+            if (v != "terrain") return fail("--bench expects \"terrain\", got \"", v, "\"");
+            o.bench = v;
+        } else if (flag == "--terrain-mode") {
+            TESSERA_TAKE(v);
+            auto mode = terrain::parseTerrainMode(v);
+            if (!mode) return fail("--terrain-mode expects lowres, continuous or adaptive, got \"", v, "\"");
+            o.terrainMode = *mode;
+        } else if (flag == "--tess-metric") {
+            TESSERA_TAKE(v);
+            auto metric = terrain::parseTessMetric(v);
+            if (!metric) return fail("--tess-metric expects screen, distance, silhouette or detail, got \"", v, "\"");
+            o.tessellation.metric = *metric;
+        }
+        else if (flag == "--tess-target") {
+            TESSERA_TAKE_NUMBER(tessellation.targetPixels, 0.25f, 1000.0f)
+            o.tessTargetGiven = true;
+        }
+        else if (flag == "--tess-distance") TESSERA_TAKE_NUMBER(tessellation.farDistance, 1.0f, 1.0e6f)
+        else if (flag == "--tess-level") TESSERA_TAKE_NUMBER(tessellation.continuousLevel, 1.0f, 64.0f)
+        else if (flag == "--tess-max") {
+            TESSERA_TAKE_NUMBER(tessellation.maxLevel, 1.0f, 64.0f)
+            o.tessMaxGiven = true;
+        }
+        else if (flag == "--meteors") TESSERA_TAKE_COUNT(meteors, 0, 10000)
+        else if (flag == "--splat") {
+            TESSERA_TAKE(v);
+            auto splat = parseSplat(v);
+            if (!splat) return splat.error();
+            o.splats.push_back(splat.value());
+        }
         else if (flag == "--width") TESSERA_TAKE_COUNT(width, 16, 16384)
         else if (flag == "--height") TESSERA_TAKE_COUNT(height, 16, 16384)
         else if (flag == "--frames") TESSERA_TAKE_COUNT(frames, 1, 10000000)
@@ -123,9 +224,11 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         } else {
             return fail("unknown option \"", flag, "\"; run with --help for the list");
         }
+#undef TESSERA_TAKE_NUMBER
 #undef TESSERA_TAKE_COUNT
 #undef TESSERA_TAKE
     }
+    if (!o.tessTargetGiven) o.tessellation.targetPixels = terrain::defaultTargetPixels(o.tessellation.metric);
     if (o.window && !o.screenshot.empty() && o.frames == 0)
         return fail("--screenshot with --window needs --frames N to know which frame to capture");
     return o;

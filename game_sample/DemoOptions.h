@@ -5,6 +5,8 @@
 
 #include "tessera/core/Result.h"
 #include "tessera/scene/CameraPose.h"
+#include "tessera/terrain/CraterSplat.h"
+#include "tessera/terrain/TessellationSettings.h"
 
 #include <cstdint>
 #include <optional>
@@ -37,6 +39,21 @@ struct DemoOptions {
     std::string screenshot;             ///< PNG of the last frame
     std::string capture;                ///< Chrome trace JSON
     std::string benchmark;              ///< benchmark JSON
+    std::string dumpHeights;            ///< --dump-heights PREFIX: PREFIX.gpu.png and PREFIX.cpu.png
+
+    /// --terrain-mode; unset: adaptive where the backend draws it, else lowres.
+    std::optional<terrain::TerrainMode> terrainMode;
+    /// --tess-metric, --tess-target, --tess-level, --tess-max, --tess-distance
+    /// (mode is filled in once the backend is known).
+    terrain::TessellationSettings tessellation;
+    bool tessMaxGiven = false;
+    bool tessTargetGiven = false;
+    uint32_t meteors = 0;                         ///< --meteors N
+    std::vector<terrain::CraterSplat> splats;     ///< --splat x,z,radius[,depth], before the first frame
+
+    /// --bench terrain: the Table 2 benchmark instead of the flythrough.
+    std::string bench;
+    std::string benchOut;               ///< --out FILE (default: stdout)
 };
 
 /// Parses argv (without argv[0]).

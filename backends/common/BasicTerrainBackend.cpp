@@ -7,6 +7,9 @@
 #include "terrain_basic.frag.spv.h"
 #include "terrain_basic.vert.spv.h"
 
+#include <cmath>
+#include <cstring>
+
 namespace tessera::backends {
 
 void BasicTerrainBackend::checkRequirements(const backend::DeviceFeatures* device, backend::BackendCapabilities& caps) {
@@ -37,31 +40,35 @@ Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
                                   {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
                                    {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
                                    {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages}},
-                                  0, 0, caps.name + ".terrainBasic.layout");
+                                  0, 0, caps.name + ".terrainLowres.layout");
 
     gpu::GraphicsPipelineDesc desc;
-    desc.name = caps.name + ".terrainBasic.fill";
+    desc.name = caps.name + ".terrainLowres.fill";
     desc.layout = &mLayout;
     desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, terrain_basic_vert_spv}, {VK_SHADER_STAGE_FRAGMENT_BIT, terrain_basic_frag_spv}};
-    // Binding 0: the tile grid (per vertex); binding 1: visible tile index (per
-    // instance), the D3D9-era way of instancing a patch over a terrain.
+    // Binding 0: the patch quad (per vertex); binding 1: visible patch index
+    // (per instance), the D3D9-era way of instancing a patch over a terrain.
     desc.vertexBindings = {{0, sizeof(glm::vec2), VK_VERTEX_INPUT_RATE_VERTEX}, {1, sizeof(uint32_t), VK_VERTEX_INPUT_RATE_INSTANCE}};
     desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}, {1, 1, VK_FORMAT_R32_UINT, 0}};
     desc.cullMode = VK_CULL_MODE_NONE;
     desc.colorFormats = {static_cast<VkFormat>(info.colorFormat)};
     desc.depthFormat = static_cast<VkFormat>(info.depthFormat);
     mFillPipeline = gpu::Pipeline(*mDevice, desc);
-    if (info.features.fillModeNonSolid) {
-        desc.name = caps.name + ".terrainBasic.wireframe";
+    mWireframeSupported = info.features.fillModeNonSolid;
+    if (mWireframeSupported) {
+        desc.name = caps.name + ".terrainLowres.wireframe";
         desc.polygonMode = VK_POLYGON_MODE_LINE;
         mWirePipeline = gpu::Pipeline(*mDevice, desc);
     }
-    return {};
+    mSplatPass = TerrainSplatPass(*mDevice, caps.name);
+    return initializeTechnique(info);
 }
 
 void BasicTerrainBackend::shutdown() {
     if (mDevice) mDevice->waitIdle();
     mTerrains.clear();
+    shutdownTechnique();
+    mSplatPass = {};
     mFillPipeline = {};
     mWirePipeline = {};
     mLayout = {};
@@ -69,16 +76,22 @@ void BasicTerrainBackend::shutdown() {
 }
 
 Result<backend::TerrainHandle> BasicTerrainBackend::createTerrain(const backend::TerrainDesc& desc) {
-    if (!desc.heightField) return fail("createTerrain: no height field");
-    if (desc.tilesPerSide == 0 || desc.quadsPerTile == 0) return fail("createTerrain: empty tiling");
-    mTerrains.push_back(std::make_unique<GpuTerrain>(*mDevice, desc));
+    if (!desc.terrain) return fail("createTerrain: no terrain");
+    auto created = GpuTerrain::create(*mDevice, *desc.terrain);
+    if (!created) return created.error();
+    mTerrains.push_back(std::move(created.value()));
     return backend::TerrainHandle{static_cast<uint32_t>(mTerrains.size() - 1)};
 }
 
-void BasicTerrainBackend::destroyTerrain(backend::TerrainHandle terrain) {
-    if (!terrain.valid() || terrain.id >= mTerrains.size() || !mTerrains[terrain.id]) return;
+GpuTerrain* BasicTerrainBackend::find(backend::TerrainHandle handle) {
+    if (!handle.valid() || handle.id >= mTerrains.size()) return nullptr;
+    return mTerrains[handle.id].get();
+}
+
+void BasicTerrainBackend::destroyTerrain(backend::TerrainHandle handle) {
+    if (!find(handle)) return;
     // The GPU may still read it in a frame in flight; release after that frame.
-    auto* released = mTerrains[terrain.id].release();
+    auto* released = mTerrains[handle.id].release();
     mDevice->deferDestroy([released] { delete released; });
 }
 
@@ -91,6 +104,19 @@ void BasicTerrainBackend::beginFrame(const backend::FrameInfo& frame) {
     mMainPassOpen = false;
 }
 
+void BasicTerrainBackend::splatTerrain(backend::TerrainHandle handle, std::span<const terrain::CraterSplat> splats) {
+    GpuTerrain* terrain = find(handle);
+    if (!terrain || splats.empty()) return;
+    // Splats render into the height map, so they must come before the main
+    // pass (and before this frame's factor passes) reads it.
+    if (mMainPassOpen) {
+        mFrame->target().endRendering(mFrame->cmd());
+        mMainPassOpen = false;
+    }
+    mSplatPass.record(*mFrame, *terrain, splats);
+    mReport.splatsApplied += static_cast<uint32_t>(splats.size());
+}
+
 void BasicTerrainBackend::ensureMainPass() {
     if (mMainPassOpen) return;
     const float clear[4] = {mFrameInfo.clearColor.r, mFrameInfo.clearColor.g, mFrameInfo.clearColor.b, 1.0f};
@@ -99,23 +125,25 @@ void BasicTerrainBackend::ensureMainPass() {
 }
 
 void BasicTerrainBackend::drawTerrain(backend::TerrainHandle handle, const backend::TerrainDrawInfo& draw) {
-    if (!handle.valid() || handle.id >= mTerrains.size() || !mTerrains[handle.id]) return;
-    drawControlMesh(*mTerrains[handle.id], draw.visibleTiles, "terrain.lowres");
+    GpuTerrain* terrain = find(handle);
+    if (!terrain) return;
+    const auto mode = draw.tessellation.mode;
+    if (mode == backend::TerrainMode::LowRes || !capabilities(nullptr).drawsTerrainMode(mode)) {
+        drawControlMesh(*terrain, draw.visiblePatches, "terrain.lowres");
+        return;
+    }
+    backend::TerrainDrawInfo clamped = draw;
+    clamped.tessellation.maxLevel = std::min(draw.tessellation.maxLevel, capabilities(nullptr).maxTessFactor);
+    drawTessellated(*terrain, clamped);
 }
 
-void BasicTerrainBackend::drawControlMesh(GpuTerrain& terrain, std::span<const uint32_t> tiles, const char* passName) {
-    ensureMainPass();
-    gpu::PassScope pass(*mFrame, passName);
-    if (tiles.empty()) return;
-    VkCommandBuffer cmd = mFrame->cmd();
-    const bool wire = mFrameInfo.wireframe && mWirePipeline.valid();
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (wire ? mWirePipeline : mFillPipeline).handle());
-
+void BasicTerrainBackend::pushTerrainDescriptors(VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout,
+                                                 GpuTerrain& terrain, std::span<const VkWriteDescriptorSet> extra) {
     VkDescriptorBufferInfo frameInfo = mFrameUniforms.descriptor();
     VkDescriptorBufferInfo terrainInfo{terrain.uniformBuffer().handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorImageInfo heightInfo{terrain.sampler().handle(), terrain.heightMap().view(),
                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkWriteDescriptorSet writes[3] = {};
+    std::vector<VkWriteDescriptorSet> writes(3);
     for (auto& w : writes) {
         w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         w.descriptorCount = 1;
@@ -129,18 +157,63 @@ void BasicTerrainBackend::drawControlMesh(GpuTerrain& terrain, std::span<const u
     writes[2].dstBinding = TS_BINDING_HEIGHTMAP;
     writes[2].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     writes[2].pImageInfo = &heightInfo;
-    mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0, 3, writes);
+    writes.insert(writes.end(), extra.begin(), extra.end());
+    mDevice->fn().cmdPushDescriptorSet(mFrame->cmd(), bindPoint, layout.handle(), 0, static_cast<uint32_t>(writes.size()),
+                                       writes.data());
+}
 
-    gpu::Buffer& tileStream = terrain.writeVisibleTiles(mFrame->slot(), tiles);
-    VkBuffer vertexBuffers[2] = {terrain.gridVertices().handle(), tileStream.handle()};
+float BasicTerrainBackend::pixelsPerMetre() const {
+    return float(mFrameInfo.height) * std::abs(mFrameInfo.projection[1][1]) * 0.5f;
+}
+
+void BasicTerrainBackend::drawControlMesh(GpuTerrain& terrain, std::span<const uint32_t> patches, const char* passName) {
+    ensureMainPass();
+    gpu::PassScope pass(*mFrame, passName);
+    if (patches.empty()) return;
+    VkCommandBuffer cmd = mFrame->cmd();
+    const bool wire = mFrameInfo.wireframe && mWirePipeline.valid();
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (wire ? mWirePipeline : mFillPipeline).handle());
+    pushTerrainDescriptors(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, terrain);
+
+    gpu::Buffer& patchStream = terrain.writeVisiblePatches(mFrame->slot(), patches);
+    VkBuffer vertexBuffers[2] = {terrain.quadVertices().handle(), patchStream.handle()};
     VkDeviceSize offsets[2] = {0, 0};
     vkCmdBindVertexBuffers(cmd, 0, 2, vertexBuffers, offsets);
-    vkCmdBindIndexBuffer(cmd, terrain.gridIndices().handle(), 0, VK_INDEX_TYPE_UINT32);
-    vkCmdDrawIndexed(cmd, terrain.gridIndexCount(), static_cast<uint32_t>(tiles.size()), 0, 0, 0);
+    vkCmdBindIndexBuffer(cmd, terrain.quadIndices().handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, 6, static_cast<uint32_t>(patches.size()), 0, 0, 0);
 
-    mReport.terrainTilesDrawn += static_cast<uint32_t>(tiles.size());
-    mReport.trianglesSubmitted += uint64_t(terrain.gridIndexCount() / 3) * tiles.size();
+    mReport.terrainPatchesDrawn += static_cast<uint32_t>(patches.size());
+    mReport.trianglesSubmitted += uint64_t(2) * patches.size();
     ++mReport.passes;
+}
+
+Result<std::vector<uint16_t>> BasicTerrainBackend::readTerrainHeights(backend::TerrainHandle handle) {
+    GpuTerrain* terrain = find(handle);
+    if (!terrain) return fail("readTerrainHeights: unknown terrain handle");
+    mDevice->waitIdle();
+    gpu::Image& heights = terrain->heightMap();
+    const size_t count = size_t(heights.width()) * heights.height();
+    gpu::Buffer readback(*mDevice, count * sizeof(uint16_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUsage::GpuToCpu,
+                         "terrain.heightReadback");
+    mDevice->submitImmediate(
+        [&](VkCommandBuffer cmd) {
+            const VkImageAspectFlags color = VK_IMAGE_ASPECT_COLOR_BIT;
+            gpu::transitionImage(cmd, heights.handle(), color, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
+                                 VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+            VkBufferImageCopy region{};
+            region.imageSubresource = {color, 0, 0, 1};
+            region.imageExtent = {heights.width(), heights.height(), 1};
+            vkCmdCopyImageToBuffer(cmd, heights.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle(), 1,
+                                   &region);
+            gpu::transitionImage(cmd, heights.handle(), color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT, 0,
+                                 VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+        },
+        "terrain.readHeights");
+    std::vector<uint16_t> samples(count);
+    std::memcpy(samples.data(), readback.mapped(), count * sizeof(uint16_t));
+    return samples;
 }
 
 void BasicTerrainBackend::endFrame() {

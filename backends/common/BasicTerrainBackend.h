@@ -1,24 +1,24 @@
 #pragma once
 /// @file BasicTerrainBackend.h
-/// The first pass the three GPU backends share: the terrain's control mesh,
-/// untessellated, displaced by vertex texture fetch and shaded from the
-/// height map. Each backend derives from it, states its own capabilities and
-/// replaces drawTerrain with its own technique for the tessellated modes.
+/// What the three GPU backends share: terrain upload, crater splats into the
+/// GPU height map, its readback, and the untessellated control mesh (the
+/// paper's low-resolution mode), displaced by vertex texture fetch and shaded
+/// from the height map. Each backend derives from it, states its capabilities
+/// and draws the tessellated modes with its own technique (drawTessellated).
 ///
 /// The frame's main pass (into the host's target) opens lazily on the first
 /// draw, so a backend can run its own off-target passes (R2VB render targets,
 /// stream-out, compute) before it.
 
 #include "GpuTerrain.h"
+#include "TerrainSplatPass.h"
 #include "tessera/backend/Backend.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/PipelineLayout.h"
 
 #include <memory>
-#include <optional>
 #include <vector>
-
 
 namespace tessera::backends {
 
@@ -29,7 +29,9 @@ public:
     Result<backend::TerrainHandle> createTerrain(const backend::TerrainDesc& desc) override;
     void destroyTerrain(backend::TerrainHandle terrain) override;
     void beginFrame(const backend::FrameInfo& frame) override;
+    void splatTerrain(backend::TerrainHandle terrain, std::span<const terrain::CraterSplat> splats) override;
     void drawTerrain(backend::TerrainHandle terrain, const backend::TerrainDrawInfo& draw) override;
+    Result<std::vector<uint16_t>> readTerrainHeights(backend::TerrainHandle terrain) override;
     void endFrame() override;
     backend::FrameReport lastFrameReport() override { return mLastReport; }
 
@@ -38,10 +40,23 @@ protected:
     /// capability queries so every backend words missing features the same way.
     static void checkRequirements(const backend::DeviceFeatures* device, backend::BackendCapabilities& caps);
 
+    /// Creates the derived backend's own pipelines, after the shared ones.
+    virtual Status initializeTechnique(const backend::BackendInitInfo&) { return {}; }
+    virtual void shutdownTechnique() {}
+    /// Draws a continuous or adaptive terrain; called only for modes the
+    /// backend's capabilities list, with maxLevel already clamped to its maximum.
+    virtual void drawTessellated(GpuTerrain&, const backend::TerrainDrawInfo&) {}
+
     /// Opens the main pass into the host's target if it is not open yet.
     void ensureMainPass();
-    /// Draws `tiles` of `terrain` as the untessellated control mesh.
-    void drawControlMesh(GpuTerrain& terrain, std::span<const uint32_t> tiles, const char* passName);
+    /// Draws the visible patches of `terrain` as the untessellated control mesh.
+    void drawControlMesh(GpuTerrain& terrain, std::span<const uint32_t> patches, const char* passName);
+    /// Pushes the frame, terrain and height-map bindings (set 0, bindings
+    /// 0..2) plus `extra` writes for `layout`.
+    void pushTerrainDescriptors(VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout, GpuTerrain& terrain,
+                                std::span<const VkWriteDescriptorSet> extra = {});
+    /// Pixels one metre covers seen face-on from one metre away (the metrics' scale).
+    float pixelsPerMetre() const;
 
     gpu::Device* mDevice = nullptr;
     gpu::FrameContext* mFrame = nullptr;
@@ -49,11 +64,15 @@ protected:
     gpu::UniformSlice mFrameUniforms;
     backend::FrameReport mReport;
     backend::FrameReport mLastReport;
+    bool mWireframeSupported = false;
 
 private:
+    GpuTerrain* find(backend::TerrainHandle handle);
+
     gpu::PipelineLayout mLayout;
     gpu::Pipeline mFillPipeline;
     gpu::Pipeline mWirePipeline;
+    TerrainSplatPass mSplatPass;
     std::vector<std::unique_ptr<GpuTerrain>> mTerrains;
     bool mMainPassOpen = false;
 };

@@ -1,22 +1,31 @@
 #include "GpuTerrain.h"
 
-#include "tessera/terrain/HeightField.h"
-
 #include <cassert>
 #include <cstring>
-#include <vector>
 
 namespace tessera::backends {
 
-GpuTerrain::GpuTerrain(gpu::Device& device, const backend::TerrainDesc& desc)
-    : mTilesPerSide(desc.tilesPerSide), mQuadsPerTile(desc.quadsPerTile) {
-    const terrain::HeightField& field = *desc.heightField;
+Result<std::unique_ptr<GpuTerrain>> GpuTerrain::create(gpu::Device& device, const terrain::Terrain& terrain) {
+    VkFormatProperties props{};
+    vkGetPhysicalDeviceFormatProperties(device.physical(), VK_FORMAT_R16_UNORM, &props);
+    const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
+                                        VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT |
+                                        VK_FORMAT_FEATURE_TRANSFER_SRC_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+    if ((props.optimalTilingFeatures & needed) != needed)
+        return fail("device ", device.features().deviceName,
+                    " cannot render to and linearly sample R16_UNORM images, which the terrain's dynamic height map needs");
+    return std::make_unique<GpuTerrain>(device, terrain);
+}
+
+GpuTerrain::GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain) : mSource(terrain) {
+    const terrain::HeightField& field = terrain.field();
     const float spacing = field.scale().horizontalSpacing;
     const glm::vec2 size = field.worldSize();
+    const glm::vec2 patch = terrain.grid().patchSize();
     mUniforms.worldSize = glm::vec4(size.x, size.y, field.scale().heightScale, spacing);
     mUniforms.heightTexel = glm::vec4(1.0f / float(field.width()), 1.0f / float(field.height()), float(field.width()),
                                       float(field.height()));
-    mUniforms.tiling = glm::vec4(float(mTilesPerSide), float(mQuadsPerTile), size.x / float(mTilesPerSide), 0.0f);
+    mUniforms.tiling = glm::vec4(float(terrain.grid().patchesPerSide()), 0.0f, patch.x, patch.y);
     mUniformBuffer = gpu::Buffer(device, sizeof mUniforms, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
                                  "terrain.uniforms");
     mUniformBuffer.upload(std::span<const shader::TerrainUniforms>(&mUniforms, 1));
@@ -25,44 +34,67 @@ GpuTerrain::GpuTerrain(gpu::Device& device, const backend::TerrainDesc& desc)
     image.width = field.width();
     image.height = field.height();
     image.format = VK_FORMAT_R16_UNORM;
-    image.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    // A render target as well as a texture: craters are splatted into it
+    // (TerrainSplatPass), the D3D9 way, which every backend can do.
+    image.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
     image.name = "terrain.heightMap";
     mHeightMap = gpu::Image(device, image);
     mHeightMap.upload(std::as_bytes(std::span(field.samples())), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    image.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    image.name = "terrain.heightScratch";
+    mHeightScratch = gpu::Image(device, image);
     mSampler = gpu::Sampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "terrain.heightSampler");
 
-    // One tile's grid in tile-local [0,1]^2; instancing places it per tile.
-    const uint32_t n = mQuadsPerTile;
-    std::vector<glm::vec2> vertices;
-    vertices.reserve((n + 1) * (n + 1));
-    for (uint32_t j = 0; j <= n; ++j)
-        for (uint32_t i = 0; i <= n; ++i) vertices.emplace_back(float(i) / float(n), float(j) / float(n));
-    std::vector<uint32_t> indices;
-    indices.reserve(n * n * 6);
-    for (uint32_t j = 0; j < n; ++j) {
-        for (uint32_t i = 0; i < n; ++i) {
-            const uint32_t a = j * (n + 1) + i, b = a + 1, c = a + (n + 1), d = c + 1;
-            indices.insert(indices.end(), {a, c, b, b, c, d});
-        }
-    }
-    mGridIndexCount = static_cast<uint32_t>(indices.size());
-    mGridVertices = gpu::Buffer(device, vertices.size() * sizeof(glm::vec2), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                                gpu::MemoryUsage::GpuOnly, "terrain.gridVertices");
-    mGridVertices.upload(std::span<const glm::vec2>(vertices));
-    mGridIndices = gpu::Buffer(device, indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
-                               gpu::MemoryUsage::GpuOnly, "terrain.gridIndices");
-    mGridIndices.upload(std::span<const uint32_t>(indices));
+    const glm::vec2 quad[4] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}, {1.0f, 1.0f}};
+    const uint32_t indices[6] = {0, 2, 1, 1, 2, 3};
+    mQuadVertices = gpu::Buffer(device, sizeof quad, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
+                                "terrain.quadVertices");
+    mQuadVertices.upload(std::span<const glm::vec2>(quad));
+    mQuadIndices = gpu::Buffer(device, sizeof indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
+                               "terrain.quadIndices");
+    mQuadIndices.upload(std::span<const uint32_t>(indices));
 
-    for (uint32_t s = 0; s < gpu::kFramesInFlight; ++s)
-        mTileStreams[s] = gpu::Buffer(device, tileCount() * sizeof(uint32_t), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                                      gpu::MemoryUsage::CpuToGpu, "terrain.visibleTiles" + std::to_string(s));
+    // Per slot, so the CPU never writes what a frame in flight still reads.
+    for (uint32_t s = 0; s < gpu::kFramesInFlight; ++s) {
+        const std::string suffix = std::to_string(s);
+        mSlots[s].patchStream = gpu::Buffer(device, patchCount() * sizeof(uint32_t), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                            gpu::MemoryUsage::CpuToGpu, "terrain.visiblePatches" + suffix);
+        mSlots[s].edgeErrors = gpu::Buffer(device, edgeCount() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                           gpu::MemoryUsage::CpuToGpu, "terrain.edgeErrors" + suffix);
+        mSlots[s].patchErrors = gpu::Buffer(device, patchCount() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                            gpu::MemoryUsage::CpuToGpu, "terrain.patchErrors" + suffix);
+        mSlots[s].edgeLevels = gpu::Buffer(device, edgeCount() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                           gpu::MemoryUsage::GpuOnly, "terrain.edgeLevels" + suffix);
+        mSlots[s].patchLevels = gpu::Buffer(device, patchCount() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                            gpu::MemoryUsage::GpuOnly, "terrain.patchLevels" + suffix);
+    }
 }
 
-gpu::Buffer& GpuTerrain::writeVisibleTiles(uint32_t slot, std::span<const uint32_t> tiles) {
-    assert(tiles.size() <= tileCount());
-    gpu::Buffer& stream = mTileStreams[slot];
-    std::memcpy(stream.mapped(), tiles.data(), tiles.size_bytes());
+gpu::Buffer& GpuTerrain::writeVisiblePatches(uint32_t slot, std::span<const uint32_t> patches) {
+    assert(patches.size() <= patchCount());
+    gpu::Buffer& stream = mSlots[slot].patchStream;
+    std::memcpy(stream.mapped(), patches.data(), patches.size_bytes());
     return stream;
+}
+
+void GpuTerrain::syncDetail(uint32_t slot) {
+    Slot& s = mSlots[slot];
+    if (s.detailRevision == mSource.revision()) return;
+    const auto& detail = mSource.detail();
+    std::memcpy(s.edgeErrors.mapped(), detail.edgeError().data(), detail.edgeError().size() * sizeof(float));
+    std::memcpy(s.patchErrors.mapped(), detail.patchError().data(), detail.patchError().size() * sizeof(float));
+    s.detailRevision = mSource.revision();
+}
+
+gpu::Buffer& GpuTerrain::edgeErrors(uint32_t slot) {
+    syncDetail(slot);
+    return mSlots[slot].edgeErrors;
+}
+
+gpu::Buffer& GpuTerrain::patchErrors(uint32_t slot) {
+    syncDetail(slot);
+    return mSlots[slot].patchErrors;
 }
 
 } // namespace tessera::backends

@@ -1,51 +1,83 @@
 #pragma once
 /// @file GpuTerrain.h
-/// A terrain's GPU resources shared by the backends: the dynamic height
-/// texture, its uniforms, the tile grid mesh (the coarse control mesh drawn
-/// in lowres mode) and per-frame streams of visible tile indices.
+/// A terrain's GPU resources shared by the backends: the dynamic height map
+/// (the GPU copy of the height field, a render target so craters can be
+/// splatted into it), its uniforms, the control mesh's quad, per-frame streams
+/// of visible patch indices and the detail errors the adaptive metric reads.
 
 #include "TerrainUniforms.h"
-#include "tessera/backend/TerrainDesc.h"
+#include "tessera/core/Result.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/Device.h"
 #include "tessera/gpu/Image.h"
 #include "tessera/gpu/Sampler.h"
+#include "tessera/terrain/Terrain.h"
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <span>
 
 namespace tessera::backends {
 
 class GpuTerrain {
 public:
-    GpuTerrain(gpu::Device& device, const backend::TerrainDesc& desc);
+    /// Fails with a message when the device cannot render into a 16-bit
+    /// height map (needed for splats) or sample it linearly.
+    static Result<std::unique_ptr<GpuTerrain>> create(gpu::Device& device, const terrain::Terrain& terrain);
+
+    GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain);
+
+    const terrain::Terrain& source() const { return mSource; }
+    uint32_t patchesPerSide() const { return mSource.grid().patchesPerSide(); }
+    uint32_t patchCount() const { return mSource.grid().patchCount(); }
+    uint32_t edgeCount() const { return mSource.grid().edgeCount(); }
 
     const shader::TerrainUniforms& uniforms() const { return mUniforms; }
     gpu::Buffer& uniformBuffer() { return mUniformBuffer; }
+    /// R16_UNORM, SHADER_READ_ONLY_OPTIMAL between passes.
     gpu::Image& heightMap() { return mHeightMap; }
+    /// Same size and format; holds the region a splat reads from.
+    gpu::Image& heightScratch() { return mHeightScratch; }
     gpu::Sampler& sampler() { return mSampler; }
-    gpu::Buffer& gridVertices() { return mGridVertices; }
-    gpu::Buffer& gridIndices() { return mGridIndices; }
-    uint32_t gridIndexCount() const { return mGridIndexCount; }
-    uint32_t tileCount() const { return mTilesPerSide * mTilesPerSide; }
-    uint32_t quadsPerTile() const { return mQuadsPerTile; }
+    /// One control-mesh quad in patch-local [0,1]^2 (4 vertices, 6 indices),
+    /// instanced once per visible patch for the untessellated draw.
+    gpu::Buffer& quadVertices() { return mQuadVertices; }
+    gpu::Buffer& quadIndices() { return mQuadIndices; }
 
-    /// Writes this frame's visible tile indices into the slot's instance
-    /// stream and returns the buffer to bind as vertex binding 1.
-    gpu::Buffer& writeVisibleTiles(uint32_t slot, std::span<const uint32_t> tiles);
+    /// Writes this frame's visible patch indices into the slot's instance
+    /// stream and returns the buffer to bind as a per-instance vertex stream.
+    gpu::Buffer& writeVisiblePatches(uint32_t slot, std::span<const uint32_t> patches);
+
+    /// The slot's copies of TerrainDetail's edge and patch errors (metres),
+    /// refreshed when the terrain's revision changed since the slot last used them.
+    gpu::Buffer& edgeErrors(uint32_t slot);
+    gpu::Buffer& patchErrors(uint32_t slot);
+    /// The slot's per-edge and per-patch tessellation levels, written on the
+    /// GPU by a backend's factor pass and read by its tessellated draw.
+    gpu::Buffer& edgeLevels(uint32_t slot) { return mSlots[slot].edgeLevels; }
+    gpu::Buffer& patchLevels(uint32_t slot) { return mSlots[slot].patchLevels; }
 
 private:
+    void syncDetail(uint32_t slot);
+
+    const terrain::Terrain& mSource;
     shader::TerrainUniforms mUniforms{};
     gpu::Buffer mUniformBuffer;
     gpu::Image mHeightMap;
+    gpu::Image mHeightScratch;
     gpu::Sampler mSampler;
-    gpu::Buffer mGridVertices;
-    gpu::Buffer mGridIndices;
-    uint32_t mGridIndexCount = 0;
-    uint32_t mTilesPerSide = 0;
-    uint32_t mQuadsPerTile = 0;
-    std::array<gpu::Buffer, gpu::kFramesInFlight> mTileStreams;
+    gpu::Buffer mQuadVertices;
+    gpu::Buffer mQuadIndices;
+    struct Slot {
+        gpu::Buffer patchStream;
+        gpu::Buffer edgeErrors;
+        gpu::Buffer patchErrors;
+        gpu::Buffer edgeLevels;
+        gpu::Buffer patchLevels;
+        uint64_t detailRevision = UINT64_MAX;
+    };
+    std::array<Slot, gpu::kFramesInFlight> mSlots;
 };
 
 } // namespace tessera::backends

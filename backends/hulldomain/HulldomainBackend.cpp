@@ -1,7 +1,15 @@
-// hulldomain: the D3D11-style backend. Tessellation control and evaluation
-// shaders (factors up to 64) and compute.
+// hulldomain: the D3D11-style backend. A compute pre-pass writes one
+// tessellation level per control-mesh edge; tessellation control (hull) and
+// evaluation (domain) shaders draw the patches with levels up to 64.
 #include "BasicTerrainBackend.h"
+#include "FrameUniforms.h"
+#include "TessFactorPass.h"
 #include "tessera/backend/PluginApi.h"
+
+#include "terrain_basic.frag.spv.h"
+#include "terrain_patch.tesc.spv.h"
+#include "terrain_patch.tese.spv.h"
+#include "terrain_patch.vert.spv.h"
 
 namespace tessera::backends {
 namespace {
@@ -11,13 +19,111 @@ public:
     backend::BackendCapabilities capabilities(const backend::DeviceFeatures* device) override {
         backend::BackendCapabilities caps;
         caps.name = "hulldomain";
-        caps.description = "D3D11-style: tessellation control/evaluation shaders and compute";
+        caps.description = "D3D11-style: compute factor pre-pass, tessellation control/evaluation shaders";
         caps.tessellation = backend::TessellationPath::Hardware;
         caps.usesCompute = true;
         caps.maxTessFactor = 64.0f;
+        caps.terrainModes = 0b111;
         checkRequirements(device, caps);
         return caps;
     }
+
+protected:
+    Status initializeTechnique(const backend::BackendInitInfo& info) override {
+        mFactorPass = TessFactorPass(*mDevice, "hulldomain");
+        const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
+        mLayout = gpu::PipelineLayout(*mDevice,
+                                      {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
+                                       {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
+                                       {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics},
+                                       {TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
+                                       {TS_BINDING_EDGE_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, graphics},
+                                       {TS_BINDING_PATCH_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, graphics}},
+                                      0, 0, "hulldomain.terrainPatches.layout");
+        gpu::GraphicsPipelineDesc desc;
+        desc.name = "hulldomain.terrainPatches.fill";
+        desc.layout = &mLayout;
+        desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, terrain_patch_vert_spv},
+                       {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, terrain_patch_tesc_spv},
+                       {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, terrain_patch_tese_spv},
+                       {VK_SHADER_STAGE_FRAGMENT_BIT, terrain_basic_frag_spv}};
+        // One control point per patch: its index, per instance.
+        desc.vertexBindings = {{0, sizeof(uint32_t), VK_VERTEX_INPUT_RATE_INSTANCE}};
+        desc.vertexAttributes = {{0, 0, VK_FORMAT_R32_UINT, 0}};
+        desc.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
+        desc.patchControlPoints = 1;
+        desc.cullMode = VK_CULL_MODE_NONE;
+        desc.colorFormats = {static_cast<VkFormat>(info.colorFormat)};
+        desc.depthFormat = static_cast<VkFormat>(info.depthFormat);
+        mFillPipeline = gpu::Pipeline(*mDevice, desc);
+        if (mWireframeSupported) {
+            desc.name = "hulldomain.terrainPatches.wireframe";
+            desc.polygonMode = VK_POLYGON_MODE_LINE;
+            mWirePipeline = gpu::Pipeline(*mDevice, desc);
+        }
+        return {};
+    }
+
+    void shutdownTechnique() override {
+        mFillPipeline = {};
+        mWirePipeline = {};
+        mLayout = {};
+        mFactorPass = {};
+    }
+
+    void drawTessellated(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw) override {
+        const terrain::TessellationSettings& settings = draw.tessellation;
+        const bool continuous = settings.mode == backend::TerrainMode::Continuous;
+        shader::TerrainTessUniforms tess{};
+        tess.levels = glm::vec4(std::clamp(settings.minLevel, 1.0f, settings.maxLevel), settings.maxLevel,
+                                std::clamp(settings.continuousLevel, 1.0f, 64.0f), 0.0f);
+        tess.metric = glm::vec4(settings.targetPixels, settings.farDistance, pixelsPerMetre(), 0.0f);
+        tess.mode = glm::uvec4(uint32_t(settings.mode), uint32_t(settings.metric), terrain.patchesPerSide(),
+                               terrain.edgeCount());
+        const gpu::UniformSlice tessUniforms = mFrame->pushUniform(tess);
+        // Continuous mode has one level for the draw: no per-edge pre-pass.
+        if (!continuous)
+            mFactorPass.record(*mFrame, terrain, tessUniforms,
+                               [this](VkPipelineBindPoint point, const gpu::PipelineLayout& layout, GpuTerrain& t,
+                                      std::span<const VkWriteDescriptorSet> extra) {
+                                   pushTerrainDescriptors(point, layout, t, extra);
+                               });
+
+        ensureMainPass();
+        gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");
+        if (draw.visiblePatches.empty()) return;
+        VkCommandBuffer cmd = mFrame->cmd();
+        const bool wire = mFrameInfo.wireframe && mWirePipeline.valid();
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (wire ? mWirePipeline : mFillPipeline).handle());
+        const uint32_t slot = mFrame->slot();
+        const VkDescriptorBufferInfo tessInfo = tessUniforms.descriptor();
+        const VkDescriptorBufferInfo edgeLevels{terrain.edgeLevels(slot).handle(), 0, VK_WHOLE_SIZE};
+        const VkDescriptorBufferInfo patchLevels{terrain.patchLevels(slot).handle(), 0, VK_WHOLE_SIZE};
+        VkWriteDescriptorSet writes[3] = {};
+        const std::pair<uint32_t, const VkDescriptorBufferInfo*> bindings[3] = {
+            {TS_BINDING_TESS, &tessInfo}, {TS_BINDING_EDGE_LEVELS, &edgeLevels}, {TS_BINDING_PATCH_LEVELS, &patchLevels}};
+        for (int i = 0; i < 3; ++i) {
+            writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+            writes[i].dstBinding = bindings[i].first;
+            writes[i].descriptorCount = 1;
+            writes[i].descriptorType = i == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+            writes[i].pBufferInfo = bindings[i].second;
+        }
+        pushTerrainDescriptors(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, terrain, writes);
+        gpu::Buffer& patchStream = terrain.writeVisiblePatches(slot, draw.visiblePatches);
+        const VkBuffer buffers[1] = {patchStream.handle()};
+        const VkDeviceSize offsets[1] = {0};
+        vkCmdBindVertexBuffers(cmd, 0, 1, buffers, offsets);
+        vkCmdDraw(cmd, 1, static_cast<uint32_t>(draw.visiblePatches.size()), 0, 0);
+        mReport.terrainPatchesDrawn += static_cast<uint32_t>(draw.visiblePatches.size());
+        ++mReport.passes;
+    }
+
+private:
+    TessFactorPass mFactorPass;
+    gpu::PipelineLayout mLayout;
+    gpu::Pipeline mFillPipeline;
+    gpu::Pipeline mWirePipeline;
 };
 
 backend::Backend* create() { return new HulldomainBackend(); }

@@ -1,13 +1,45 @@
 // The null backend: the whole frame logic with no GPU (bgfx's and sokol's
 // noop renderer). It validates every call the way a real backend would use
 // it and counts what a real backend would draw, so tests of the data model
-// (scene, culling, LOD, terrain tiling) run anywhere, CI included.
+// (scene, culling, tessellation levels, splats) run anywhere, CI included.
 #include "tessera/backend/PluginApi.h"
+#include "tessera/terrain/Terrain.h"
+#include "tessera/terrain/TessLevels.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <vector>
 
 namespace tessera::backends {
 namespace {
+
+constexpr float kMaxTessFactor = 64.0f;
+
+// A level as fractional_odd spacing uses it: rounded up to an odd integer,
+// at most 63 (the largest odd level under the 64 maximum).
+uint64_t oddSegments(float level) {
+    const auto n = static_cast<uint64_t>(std::ceil(std::clamp(level, 1.0f, kMaxTessFactor - 1.0f)));
+    return n | 1u;
+}
+
+// Triangles the tessellator makes for one quad patch with fractional_odd
+// spacing. An estimate until the emulated tessellator lands and can be
+// counted exactly: a quad is 2 triangles when every level is 1; otherwise an
+// inner level of 1 counts as 3 (Vulkan's 1 + epsilon rule), the interior is a
+// (m0 - 2) x (m1 - 2) grid of quads, and each side's ring strip has one
+// triangle per outer segment plus one per inner-ring segment.
+uint64_t quadTriangles(const std::array<float, 4>& outer, const std::array<float, 2>& inner) {
+    std::array<uint64_t, 4> n{};
+    for (size_t s = 0; s < 4; ++s) n[s] = oddSegments(outer[s]);
+    uint64_t m0 = oddSegments(inner[0]), m1 = oddSegments(inner[1]);
+    if (m0 == 1 && m1 == 1 && n == std::array<uint64_t, 4>{1, 1, 1, 1}) return 2;
+    m0 = std::max<uint64_t>(m0, 3);
+    m1 = std::max<uint64_t>(m1, 3);
+    // Sides 1 and 3 run along u (inner[0]); sides 0 and 2 along v (inner[1]).
+    const uint64_t ring = (n[0] + m1 - 2) + (n[1] + m0 - 2) + (n[2] + m1 - 2) + (n[3] + m0 - 2);
+    return 2 * (m0 - 2) * (m1 - 2) + ring;
+}
 
 class NullBackend final : public backend::Backend {
 public:
@@ -16,6 +48,10 @@ public:
         caps.name = "null";
         caps.description = "no GPU: runs the frame logic and counts what would be drawn";
         caps.requiresGpu = false;
+        caps.maxTessFactor = kMaxTessFactor;
+        caps.terrainModes = (1u << uint32_t(terrain::TerrainMode::LowRes)) |
+                            (1u << uint32_t(terrain::TerrainMode::Continuous)) |
+                            (1u << uint32_t(terrain::TerrainMode::Adaptive));
         return caps;
     }
 
@@ -31,30 +67,54 @@ public:
 
     Result<backend::TerrainHandle> createTerrain(const backend::TerrainDesc& desc) override {
         if (!mInitialized) return fail("null backend: createTerrain before initialize");
-        if (!desc.heightField) return fail("createTerrain: no height field");
-        if (desc.tilesPerSide == 0 || desc.quadsPerTile == 0) return fail("createTerrain: empty tiling");
-        mTerrains.push_back(Terrain{desc.tilesPerSide * desc.tilesPerSide, desc.quadsPerTile, true});
+        if (!desc.terrain) return fail("createTerrain: no terrain");
+        mTerrains.push_back(desc.terrain);
         return backend::TerrainHandle{static_cast<uint32_t>(mTerrains.size() - 1)};
     }
 
     void destroyTerrain(backend::TerrainHandle terrain) override {
-        if (terrain.valid() && terrain.id < mTerrains.size()) mTerrains[terrain.id].alive = false;
+        if (terrain.valid() && terrain.id < mTerrains.size()) mTerrains[terrain.id] = nullptr;
     }
 
     void beginFrame(const backend::FrameInfo& frame) override {
         mReport = {};
         mReport.frameIndex = frame.frameIndex;
+        mView.eye = frame.cameraPosition;
+        mView.pixelsPerMetre = float(frame.height) * std::abs(frame.projection[1][1]) * 0.5f;
+    }
+
+    void splatTerrain(backend::TerrainHandle handle, std::span<const terrain::CraterSplat> splats) override {
+        // The CPU copy is the terrain itself, already splatted by the host.
+        if (terrainOf(handle)) mReport.splatsApplied += static_cast<uint32_t>(splats.size());
     }
 
     void drawTerrain(backend::TerrainHandle handle, const backend::TerrainDrawInfo& draw) override {
-        if (!handle.valid() || handle.id >= mTerrains.size() || !mTerrains[handle.id].alive) return;
-        const Terrain& t = mTerrains[handle.id];
-        uint32_t drawn = 0;
-        for (uint32_t tile : draw.visibleTiles)
-            if (tile < t.tileCount) ++drawn;
-        mReport.terrainTilesDrawn += drawn;
-        mReport.trianglesSubmitted += uint64_t(drawn) * t.quadsPerTile * t.quadsPerTile * 2;
+        const terrain::Terrain* t = terrainOf(handle);
+        if (!t) return;
+        const terrain::PatchGrid& grid = t->grid();
+        const bool tessellated = draw.tessellation.mode != terrain::TerrainMode::LowRes;
+        terrain::TessLevels levels;
+        if (tessellated) levels = terrain::computeTessLevels(*t, draw.tessellation, mView, kMaxTessFactor);
+        for (uint32_t patch : draw.visiblePatches) {
+            if (patch >= grid.patchCount()) continue;
+            ++mReport.terrainPatchesDrawn;
+            if (!tessellated) {
+                mReport.trianglesSubmitted += 2;
+                continue;
+            }
+            const std::array<uint32_t, 4> edges = grid.patchEdges(patch);
+            const std::array<float, 4> outer{levels.edges[edges[0]], levels.edges[edges[1]], levels.edges[edges[2]],
+                                             levels.edges[edges[3]]};
+            mReport.trianglesSubmitted += quadTriangles(outer, terrain::innerLevels(levels, grid, patch));
+        }
         ++mReport.passes;
+    }
+
+    Result<std::vector<uint16_t>> readTerrainHeights(backend::TerrainHandle handle) override {
+        // With no GPU copy, the terrain's CPU copy is what a readback would return.
+        const terrain::Terrain* t = terrainOf(handle);
+        if (!t) return fail("readTerrainHeights: no such terrain");
+        return t->field().samples();
     }
 
     void endFrame() override { mLast = mReport; }
@@ -62,12 +122,12 @@ public:
     backend::FrameReport lastFrameReport() override { return mLast; }
 
 private:
-    struct Terrain {
-        uint32_t tileCount;
-        uint32_t quadsPerTile;
-        bool alive;
-    };
-    std::vector<Terrain> mTerrains;
+    const terrain::Terrain* terrainOf(backend::TerrainHandle handle) const {
+        return handle.valid() && handle.id < mTerrains.size() ? mTerrains[handle.id] : nullptr;
+    }
+
+    std::vector<const terrain::Terrain*> mTerrains; ///< null once destroyed
+    terrain::TessView mView;
     backend::FrameReport mReport;
     backend::FrameReport mLast;
     bool mInitialized = false;

@@ -21,8 +21,13 @@ public:
         return backend::TerrainHandle{0};
     }
     void destroyTerrain(backend::TerrainHandle) override {}
-    void beginFrame(const backend::FrameInfo& frame) override { mReport = {frame.frameIndex, 0, 0, 0}; }
+    void beginFrame(const backend::FrameInfo& frame) override { mReport = {};
+        mReport.frameIndex = frame.frameIndex; }
+    void splatTerrain(backend::TerrainHandle, std::span<const terrain::CraterSplat>) override {}
     void drawTerrain(backend::TerrainHandle, const backend::TerrainDrawInfo&) override {}
+    Result<std::vector<uint16_t>> readTerrainHeights(backend::TerrainHandle) override {
+        return fail("this backend keeps no GPU copy of the terrain");
+    }
     void endFrame() override {}
     backend::FrameReport lastFrameReport() override { return mReport; }
 

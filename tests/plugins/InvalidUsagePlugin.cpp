@@ -24,7 +24,11 @@ public:
     }
     void destroyTerrain(backend::TerrainHandle) override {}
     void beginFrame(const backend::FrameInfo& frame) override { mFrame = frame.gpu; }
+    void splatTerrain(backend::TerrainHandle, std::span<const terrain::CraterSplat>) override {}
     void drawTerrain(backend::TerrainHandle, const backend::TerrainDrawInfo&) override {}
+    Result<std::vector<uint16_t>> readTerrainHeights(backend::TerrainHandle) override {
+        return fail("this backend keeps no GPU copy of the terrain");
+    }
     void endFrame() override {
         const float clear[4] = {0, 0, 0, 1};
         mFrame->target().beginRendering(mFrame->cmd(), clear);

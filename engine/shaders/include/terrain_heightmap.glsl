@@ -21,6 +21,18 @@ float terrainHeight(vec2 worldXZ) {
     return textureLod(heightMap, terrainTexcoord(worldXZ), 0.0).r * terrain.worldSize.z;
 }
 
+// World XZ of the point at patch-local (u, v) of control-mesh patch `patchIndex`.
+// Written as (corner + uv) * size so that a point on an edge shared by two
+// patches gets bit-identical coordinates from both (e.g. (x + 1.0) and
+// (x + 1 + 0.0) are the same float): with identical tessellation factors that
+// is what keeps adaptive tessellation free of cracks.
+vec2 terrainPatchPoint(uint patchIndex, vec2 uv) {
+    uint patches = uint(terrain.tiling.x);
+    precise vec2 corner = vec2(float(patchIndex % patches), float(patchIndex / patches)) + uv;
+    precise vec2 xz = corner * terrain.tiling.zw;
+    return xz;
+}
+
 vec3 terrainNormal(vec2 worldXZ) {
     float s = terrain.worldSize.w;
     float hl = terrainHeight(worldXZ - vec2(s, 0.0));

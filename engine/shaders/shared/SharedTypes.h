@@ -8,6 +8,12 @@
 //     std140/std430 rule and in C++ with glm), packing scalars into vec4s;
 //   - follow each struct with TS_CHECK_SIZE(Struct, bytes) (no semicolon: GLSL
 //     rejects a stray one), which C++ checks.
+// Functions written with TS_INLINE are compiled by both too (crater profile,
+// tessellation metrics, patch indexing), so the CPU reference and the shaders
+// run the same formula. They may use float, vec2/vec3/vec4, uint and the
+// GLSL built-ins named in the using-declarations below; write float literals
+// with an f suffix and unsigned ones with u, which both languages accept, and
+// declare out-parameters with TS_OUT(type).
 #ifndef TESSERA_SHARED_TYPES_H
 #define TESSERA_SHARED_TYPES_H
 
@@ -15,12 +21,25 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 namespace tessera::shader {
+using vec2 = glm::vec2;
+using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using uvec4 = glm::uvec4;
 using ivec4 = glm::ivec4;
 using mat4 = glm::mat4;
 using uint = uint32_t;
+using glm::clamp;
+using glm::dot;
+using glm::length;
+using glm::max;
+using glm::min;
+using glm::mix;
+using glm::normalize;
+using glm::sqrt;
+using glm::abs;
 } // namespace tessera::shader
+#define TS_INLINE inline
+#define TS_OUT(type) type&
 #define TS_NAMESPACE_BEGIN namespace tessera::shader {
 #define TS_NAMESPACE_END }
 #define TS_CHECK_SIZE(type, bytes) \
@@ -30,6 +49,8 @@ using uint = uint32_t;
 #define TS_NAMESPACE_BEGIN
 #define TS_NAMESPACE_END
 #define TS_CHECK_SIZE(type, bytes)
+#define TS_INLINE
+#define TS_OUT(type) out type
 #endif
 
 #endif

@@ -8,7 +8,7 @@ TS_NAMESPACE_BEGIN
 struct TerrainUniforms {
     vec4 worldSize;   // x: extent along X (m), y: extent along Z (m), z: height scale (m at 1.0), w: sample spacing (m)
     vec4 heightTexel; // x: 1/width, y: 1/height, z: width, w: height (samples)
-    vec4 tiling;      // x: tiles per side, y: quads per tile side, z: tile size (m), w: unused
+    vec4 tiling;      // x: patches per side, y: unused, z: patch size along X (m), w: patch size along Z (m)
 };
 TS_CHECK_SIZE(TerrainUniforms, 48)
 

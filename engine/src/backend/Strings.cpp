@@ -1,6 +1,5 @@
 // String forms of the contract's enums, shared by the CLI, reports and logs.
 #include "tessera/backend/BackendCapabilities.h"
-#include "tessera/backend/TerrainDesc.h"
 
 namespace tessera::backend {
 
@@ -9,15 +8,6 @@ const char* toString(TessellationPath path) {
     case TessellationPath::None: return "none";
     case TessellationPath::Emulated: return "emulated";
     case TessellationPath::Hardware: return "hardware";
-    }
-    return "?";
-}
-
-const char* toString(TerrainMode mode) {
-    switch (mode) {
-    case TerrainMode::LowRes: return "lowres";
-    case TerrainMode::Continuous: return "continuous";
-    case TerrainMode::Adaptive: return "adaptive";
     }
     return "?";
 }

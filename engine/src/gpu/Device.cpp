@@ -60,6 +60,9 @@ Result<std::unique_ptr<Device>> Device::create(Instance& instance, const Physica
     VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     v13.dynamicRendering = VK_TRUE;
     v13.synchronization2 = VK_TRUE;
+    // Required by Vulkan 1.3; glslang's vulkan1.3 target declares compute
+    // workgroup sizes with LocalSizeId, which needs it enabled.
+    v13.maintenance4 = VK_TRUE;
     if (want.transformFeedback) v13.pNext = &xfb;
     VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v13};
     features2.features = core;

@@ -1,5 +1,6 @@
 #include "tessera/gpu/Pipeline.h"
 
+#include "ShaderModule.h"
 #include "tessera/gpu/Device.h"
 #include "tessera/gpu/PipelineLayout.h"
 #include "tessera/gpu/VulkanCheck.h"
@@ -11,19 +12,15 @@ namespace tessera::gpu {
 
 Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) : mDevice(&device) {
     assert(desc.layout);
-    std::vector<VkShaderModule> modules;
+    // Modules are only needed while the pipeline is compiled.
+    std::vector<ShaderModule> modules;
+    modules.reserve(desc.stages.size());
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     for (const auto& s : desc.stages) {
-        VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-        moduleInfo.codeSize = s.spirv.size_bytes();
-        moduleInfo.pCode = s.spirv.data();
-        VkShaderModule module = VK_NULL_HANDLE;
-        TESSERA_VK_CHECK(vkCreateShaderModule(device.handle(), &moduleInfo, nullptr, &module));
-        device.setName(VK_OBJECT_TYPE_SHADER_MODULE, module, desc.name + ".shader" + std::to_string(stages.size()));
-        modules.push_back(module);
+        modules.emplace_back(device, s.spirv, desc.name + ".shader" + std::to_string(stages.size()));
         VkPipelineShaderStageCreateInfo stage{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
         stage.stage = s.stage;
-        stage.module = module;
+        stage.module = modules.back().handle();
         stage.pName = "main";
         stages.push_back(stage);
     }
@@ -90,8 +87,6 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) : mDevice(&
     info.layout = desc.layout->handle();
     TESSERA_VK_CHECK(vkCreateGraphicsPipelines(device.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &mPipeline));
     device.setName(VK_OBJECT_TYPE_PIPELINE, mPipeline, desc.name);
-    // Modules are only needed while the pipeline is compiled.
-    for (auto m : modules) vkDestroyShaderModule(device.handle(), m, nullptr);
 }
 
 Pipeline::~Pipeline() {

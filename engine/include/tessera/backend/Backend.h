@@ -27,6 +27,10 @@
 #include "tessera/backend/TerrainDesc.h"
 #include "tessera/core/Result.h"
 
+#include <cstdint>
+#include <span>
+#include <vector>
+
 namespace tessera::backend {
 
 class Backend {

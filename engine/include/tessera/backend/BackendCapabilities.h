@@ -7,6 +7,9 @@
 /// backend has no tessellation stages by design. Capabilities differ per
 /// backend, and the host reports them instead of hiding them.
 
+#include "tessera/terrain/TessellationSettings.h"
+
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -30,11 +33,14 @@ struct BackendCapabilities {
     bool usesGeometryShaders = false;
     bool usesCompute = false;
     float maxTessFactor = 1.0f;
+    /// Bit (1 << TerrainMode) for each terrain mode the backend draws.
+    uint32_t terrainModes = 1u << uint32_t(terrain::TerrainMode::LowRes);
     /// Empty when the backend can run on the device it was asked about;
     /// otherwise one entry per missing feature, in plain words.
     std::vector<std::string> missing;
 
     bool supported() const { return missing.empty(); }
+    bool drawsTerrainMode(terrain::TerrainMode mode) const { return (terrainModes >> uint32_t(mode)) & 1u; }
 };
 
 } // namespace tessera::backend

@@ -9,7 +9,8 @@ namespace tessera::backend {
 
 struct FrameReport {
     uint64_t frameIndex = 0;
-    uint32_t terrainTilesDrawn = 0;
+    uint32_t terrainPatchesDrawn = 0;
+    uint32_t splatsApplied = 0;
     /// Triangles the backend submitted (before clipping), as it computes them.
     uint64_t trianglesSubmitted = 0;
     uint32_t passes = 0;

@@ -2,39 +2,35 @@
 /// @file TerrainDesc.h
 /// The terrain the host asks a backend to upload, and how to draw it.
 
+#include "tessera/terrain/CraterSplat.h"
+#include "tessera/terrain/TessellationSettings.h"
+
 #include <cstdint>
 #include <span>
 
 namespace tessera::terrain {
-class HeightField;
+class Terrain;
 }
 
 namespace tessera::backend {
 
-/// Upload description. The backend copies what it needs; the height field
-/// stays owned by the engine (it is the CPU copy gameplay queries use).
+using terrain::TerrainMode;
+
+/// Upload description. The terrain stays owned by the engine (its height
+/// field is the CPU copy gameplay queries use) and must outlive the backend's
+/// handle: backends read its control mesh and detail errors when they change
+/// (Terrain::revision()). createTerrain uploads the height field as it is
+/// then, so splats still queued at that point are already in the GPU copy:
+/// the host drops them (Terrain::takePendingSplats) instead of sending them.
 struct TerrainDesc {
-    const terrain::HeightField* heightField = nullptr;
-    /// Tiles per side; tile t covers samples [tx*n, (tx+1)*n] with
-    /// n = (width-1)/tilesPerSide, tx = t % tilesPerSide.
-    uint32_t tilesPerSide = 16;
-    /// Control-mesh quads per tile side for the untessellated (lowres) draw.
-    uint32_t quadsPerTile = 32;
+    const terrain::Terrain* terrain = nullptr;
 };
-
-/// The paper's Table 2 modes.
-enum class TerrainMode {
-    LowRes,     ///< the untessellated control mesh
-    Continuous, ///< one tessellation level per draw
-    Adaptive,   ///< per-edge adaptive levels
-};
-
-const char* toString(TerrainMode mode);
 
 struct TerrainDrawInfo {
-    /// Indices of the tiles that survived frustum culling, in draw order.
-    std::span<const uint32_t> visibleTiles;
-    TerrainMode mode = TerrainMode::LowRes;
+    /// Indices of the patches that survived culling (Terrain::cull), in draw order.
+    std::span<const uint32_t> visiblePatches;
+    /// Mode, metric and levels; maxLevel is clamped to the backend's maximum.
+    terrain::TessellationSettings tessellation;
 };
 
 } // namespace tessera::backend

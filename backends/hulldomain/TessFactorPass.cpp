@@ -1,0 +1,69 @@
+#include "TessFactorPass.h"
+
+#include "FrameUniforms.h"
+#include "TerrainUniforms.h"
+
+#include "terrain_factors.comp.spv.h"
+
+namespace tessera::backends {
+
+namespace {
+
+VkWriteDescriptorSet storageWrite(uint32_t binding, const VkDescriptorBufferInfo* info) {
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstBinding = binding;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    write.pBufferInfo = info;
+    return write;
+}
+
+} // namespace
+
+TessFactorPass::TessFactorPass(gpu::Device& device, const std::string& backendName) {
+    const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+    mLayout = gpu::PipelineLayout(device,
+                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
+                                   {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
+                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
+                                   {TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
+                                   {TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
+                                   {TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
+                                   {TS_BINDING_EDGE_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
+                                   {TS_BINDING_PATCH_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute}},
+                                  0, 0, backendName + ".terrainFactors.layout");
+    mPipeline = gpu::ComputePipeline(device, mLayout, terrain_factors_comp_spv, backendName + ".terrainFactors");
+}
+
+void TessFactorPass::record(gpu::FrameContext& frame, GpuTerrain& terrain, const gpu::UniformSlice& tessUniforms,
+                            const PushBindings& pushBindings) {
+    gpu::PassScope pass(frame, "terrain.factors");
+    VkCommandBuffer cmd = frame.cmd();
+    const uint32_t slot = frame.slot();
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mPipeline.handle());
+    const VkDescriptorBufferInfo tess = tessUniforms.descriptor();
+    const VkDescriptorBufferInfo edgeErrors{terrain.edgeErrors(slot).handle(), 0, VK_WHOLE_SIZE};
+    const VkDescriptorBufferInfo patchErrors{terrain.patchErrors(slot).handle(), 0, VK_WHOLE_SIZE};
+    const VkDescriptorBufferInfo edgeLevels{terrain.edgeLevels(slot).handle(), 0, VK_WHOLE_SIZE};
+    const VkDescriptorBufferInfo patchLevels{terrain.patchLevels(slot).handle(), 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet writes[5] = {storageWrite(TS_BINDING_TESS, &tess), storageWrite(TS_BINDING_EDGE_ERROR, &edgeErrors),
+                                      storageWrite(TS_BINDING_PATCH_ERROR, &patchErrors),
+                                      storageWrite(TS_BINDING_EDGE_LEVELS, &edgeLevels),
+                                      storageWrite(TS_BINDING_PATCH_LEVELS, &patchLevels)};
+    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    pushBindings(VK_PIPELINE_BIND_POINT_COMPUTE, mLayout, terrain, writes);
+    const uint32_t invocations = terrain.edgeCount() + terrain.patchCount();
+    vkCmdDispatch(cmd, (invocations + 63) / 64, 1, 1);
+
+    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    barrier.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    barrier.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    barrier.dstStageMask = VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT;
+    barrier.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
+    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dependency.memoryBarrierCount = 1;
+    dependency.pMemoryBarriers = &barrier;
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
+
+} // namespace tessera::backends

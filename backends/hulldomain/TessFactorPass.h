@@ -1,0 +1,40 @@
+#pragma once
+/// @file TessFactorPass.h
+/// hulldomain's factor pre-pass: a compute dispatch that writes one level per
+/// canonical control-mesh edge and per patch (terrain_factors.comp), the
+/// D3D11 way of moving the metric out of the hull shader so each shared edge
+/// is evaluated once.
+
+#include "GpuTerrain.h"
+#include "TessFactors.h"
+#include "tessera/gpu/ComputePipeline.h"
+#include "tessera/gpu/FrameContext.h"
+#include "tessera/gpu/PipelineLayout.h"
+
+#include <functional>
+#include <span>
+#include <string>
+
+namespace tessera::backends {
+
+class TessFactorPass {
+public:
+    /// Pushes the frame, terrain and height-map bindings plus `extra` for a layout.
+    using PushBindings = std::function<void(VkPipelineBindPoint, const gpu::PipelineLayout&, GpuTerrain&,
+                                            std::span<const VkWriteDescriptorSet>)>;
+
+    TessFactorPass() = default;
+    TessFactorPass(gpu::Device& device, const std::string& backendName);
+
+    /// Records "terrain.factors": levels for every edge and patch of `terrain`
+    /// into the slot's level buffers, then a barrier that makes them visible
+    /// to the tessellation control stage.
+    void record(gpu::FrameContext& frame, GpuTerrain& terrain, const gpu::UniformSlice& tessUniforms,
+                const PushBindings& pushBindings);
+
+private:
+    gpu::PipelineLayout mLayout;
+    gpu::ComputePipeline mPipeline;
+};
+
+} // namespace tessera::backends

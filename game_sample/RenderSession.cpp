@@ -1,0 +1,149 @@
+#include "RenderSession.h"
+
+#include "DemoScene.h"
+#include "tessera/core/Log.h"
+#include "tessera/profiler/CpuScope.h"
+#include "tessera/profiler/Profiler.h"
+
+#include <sstream>
+
+namespace tessera::demo {
+
+Result<std::unique_ptr<RenderSession>> RenderSession::create(const DemoOptions& options, terrain::Terrain& terrain) {
+    std::unique_ptr<RenderSession> session(new RenderSession());
+    session->mTerrain = &terrain;
+    auto selected = selectBackend(options);
+    if (!selected) return selected.error();
+    session->mSelected = std::move(selected.value());
+    log::info("backend " + session->capabilities().name + " on " + session->deviceName());
+
+    session->mWidth = options.width;
+    session->mHeight = options.height;
+    gpu::Device* device = session->mSelected->device.get();
+    if (device) {
+        if (options.window) {
+            auto swapchain = gpu::Swapchain::create(*session->mSelected->instance, *device, session->mWidth,
+                                                    session->mHeight, "Tessera");
+            if (!swapchain) return swapchain.error();
+            session->mSwapchain = std::move(swapchain.value());
+        }
+        session->mTarget = std::make_unique<gpu::RenderTarget>(*device, session->mWidth, session->mHeight);
+        session->mScheduler =
+            std::make_unique<gpu::FrameScheduler>(*device, profiler::Profiler::global(), *session->mTarget);
+    }
+
+    backend::BackendInitInfo init;
+    init.device = device;
+    if (device) init.features = device->features();
+    init.colorFormat = static_cast<uint32_t>(gpu::RenderTarget::kColorFormat);
+    init.depthFormat = static_cast<uint32_t>(gpu::RenderTarget::kDepthFormat);
+    backend::Backend& backend = *session->mSelected->backend;
+    if (auto ok = backend.initialize(init); !ok) return ok.error();
+    // The upload copies the CPU height field as it is now, craters included,
+    // so the splats still queued (--splat) must not be applied a second time.
+    (void)terrain.takePendingSplats();
+    auto handle = backend.createTerrain({&terrain});
+    if (!handle) {
+        backend.shutdown();
+        return handle.error();
+    }
+    session->mTerrainHandle = handle.value();
+    return session;
+}
+
+RenderSession::~RenderSession() {
+    if (!mSelected || !mSelected->backend) return;
+    if (mScheduler) mScheduler->waitIdle();
+    if (mTerrainHandle.valid()) mSelected->backend->destroyTerrain(mTerrainHandle);
+    mSelected->backend->shutdown();
+}
+
+std::string RenderSession::deviceName() const {
+    return mSelected->device ? mSelected->device->features().deviceName : std::string("none (null backend)");
+}
+
+std::string RenderSession::driverName() const {
+    if (!mSelected->device) return "none";
+    const auto& f = mSelected->device->features();
+    return f.driverName + " " + f.driverInfo;
+}
+
+Result<terrain::TessellationSettings> RenderSession::resolveTessellation(const DemoOptions& options) const {
+    const auto& caps = capabilities();
+    terrain::TessellationSettings settings = options.tessellation;
+    if (options.terrainMode) {
+        settings.mode = *options.terrainMode;
+        if (!caps.drawsTerrainMode(settings.mode)) {
+            std::ostringstream modes;
+            for (auto m : {terrain::TerrainMode::LowRes, terrain::TerrainMode::Continuous, terrain::TerrainMode::Adaptive})
+                if (caps.drawsTerrainMode(m)) modes << (modes.tellp() > 0 ? ", " : "") << terrain::toString(m);
+            return fail("--terrain-mode ", terrain::toString(settings.mode), ": backend ", caps.name,
+                        " does not draw it (it draws: ", modes.str(), ")");
+        }
+    } else {
+        settings.mode = caps.drawsTerrainMode(terrain::TerrainMode::Adaptive) ? terrain::TerrainMode::Adaptive
+                                                                               : terrain::TerrainMode::LowRes;
+    }
+    if (settings.mode == terrain::TerrainMode::LowRes) return settings;
+    if (options.tessMaxGiven && settings.maxLevel > caps.maxTessFactor)
+        return fail("--tess-max ", std::to_string(settings.maxLevel), ": backend ", caps.name, " tessellates up to level ",
+                    std::to_string(caps.maxTessFactor));
+    if (settings.mode == terrain::TerrainMode::Continuous && settings.continuousLevel > caps.maxTessFactor)
+        return fail("--tess-level ", std::to_string(settings.continuousLevel), ": backend ", caps.name,
+                    " tessellates up to level ", std::to_string(caps.maxTessFactor));
+    settings.maxLevel = std::min(settings.maxLevel, caps.maxTessFactor);
+    return settings;
+}
+
+bool RenderSession::pollWindow() {
+    if (!mSwapchain) return true;
+    if (mSwapchain->pollEvents()) mSwapchain->recreate();
+    return !mSwapchain->shouldClose();
+}
+
+void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera,
+                                const terrain::TessellationSettings& settings, const glm::vec3& clearColor,
+                                bool wireframe, bool readback) {
+    backend::Backend& backend = *mSelected->backend;
+    mVisible.clear();
+    {
+        TESSERA_CPU_SCOPE("terrain.cull");
+        mTerrain->cull(camera.frustum(), camera.position(), mVisible);
+    }
+    const std::vector<terrain::CraterSplat> splats = mTerrain->takePendingSplats();
+    backend::FrameInfo info;
+    info.frameIndex = frameIndex;
+    info.timeSeconds = frameIndex * DemoScene::kSecondsPerFrame;
+    info.view = camera.view();
+    info.projection = camera.projection();
+    info.viewProjection = camera.viewProjection();
+    info.cameraPosition = camera.position();
+    info.clearColor = glm::vec4(clearColor, 1.0f);
+    info.width = mWidth;
+    info.height = mHeight;
+    info.wireframe = wireframe;
+    {
+        TESSERA_CPU_SCOPE("render.record");
+        if (mScheduler) info.gpu = &mScheduler->beginFrame(frameIndex);
+        backend.beginFrame(info);
+        backend.splatTerrain(mTerrainHandle, splats);
+        backend.drawTerrain(mTerrainHandle, {mVisible, settings});
+        backend.endFrame();
+    }
+    if (mScheduler) {
+        TESSERA_CPU_SCOPE("render.submit");
+        mScheduler->endFrame(readback, mSwapchain.get());
+    }
+}
+
+std::vector<uint8_t> RenderSession::finish() {
+    if (!mScheduler) return {};
+    mScheduler->waitIdle();
+    return mScheduler->readbackPixels();
+}
+
+Result<std::vector<uint16_t>> RenderSession::readHeights() {
+    return mSelected->backend->readTerrainHeights(mTerrainHandle);
+}
+
+} // namespace tessera::demo

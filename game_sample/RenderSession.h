@@ -1,0 +1,68 @@
+#pragma once
+/// @file RenderSession.h
+/// One backend on one device drawing one terrain into an offscreen target or
+/// a window: what the flythrough and the benchmark share.
+
+#include "BackendSelection.h"
+#include "DemoOptions.h"
+#include "tessera/gpu/FrameScheduler.h"
+#include "tessera/gpu/RenderTarget.h"
+#include "tessera/gpu/Swapchain.h"
+#include "tessera/scene/Camera.h"
+#include "tessera/terrain/Terrain.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tessera::demo {
+
+class RenderSession {
+public:
+    /// Selects the backend and device from `options`, opens the target (and
+    /// window with --window), initialises the backend and uploads `terrain`,
+    /// which must outlive the session.
+    static Result<std::unique_ptr<RenderSession>> create(const DemoOptions& options, terrain::Terrain& terrain);
+    ~RenderSession();
+    RenderSession(const RenderSession&) = delete;
+    RenderSession& operator=(const RenderSession&) = delete;
+
+    const backend::BackendCapabilities& capabilities() const { return mSelected->capabilities; }
+    std::string deviceName() const;
+    std::string driverName() const;
+    uint32_t width() const { return mWidth; }
+    uint32_t height() const { return mHeight; }
+    bool windowed() const { return mSwapchain != nullptr; }
+
+    /// The tessellation the options ask for, checked against this backend:
+    /// the default mode, and a clear error for a mode or level it cannot draw.
+    Result<terrain::TessellationSettings> resolveTessellation(const DemoOptions& options) const;
+
+    /// Handles window events; false once the window was closed.
+    bool pollWindow();
+    /// Records and submits one frame: pending craters into the GPU height
+    /// map, culling, the terrain draw. Reads the image back when `readback`.
+    void renderFrame(uint32_t frameIndex, const scene::Camera& camera, const terrain::TessellationSettings& settings,
+                     const glm::vec3& clearColor, bool wireframe, bool readback);
+    /// Waits for the GPU; the last read-back image (RGBA8), empty if none.
+    std::vector<uint8_t> finish();
+    /// Patches that survived culling in the last frame.
+    uint32_t lastPatchCount() const { return static_cast<uint32_t>(mVisible.size()); }
+    /// The GPU copy of the height map (blocking).
+    Result<std::vector<uint16_t>> readHeights();
+
+private:
+    RenderSession() = default;
+
+    terrain::Terrain* mTerrain = nullptr;
+    std::unique_ptr<SelectedBackend> mSelected;
+    std::unique_ptr<gpu::Swapchain> mSwapchain;
+    std::unique_ptr<gpu::RenderTarget> mTarget;
+    std::unique_ptr<gpu::FrameScheduler> mScheduler;
+    backend::TerrainHandle mTerrainHandle;
+    uint32_t mWidth = 0;
+    uint32_t mHeight = 0;
+    std::vector<uint32_t> mVisible;
+};
+
+} // namespace tessera::demo

@@ -1,0 +1,77 @@
+#include "TerrainBenchReport.h"
+
+#include "tessera/core/JsonWriter.h"
+
+#include <cstdio>
+
+namespace tessera::demo {
+
+std::string terrainBenchJson(const std::vector<TerrainBenchRecord>& records) {
+    JsonWriter json(true);
+    json.beginArray();
+    for (const auto& r : records) {
+        json.beginObject();
+        json.keyValue("backend", r.backend);
+        json.keyValue("mode", r.mode);
+        json.keyValue("view", r.view);
+        json.keyValue("width", r.width);
+        json.keyValue("height", r.height);
+        json.keyValue("triangles", r.triangles);
+        json.key("gpu_ms_median");
+        json.valueFixed(r.gpuMsMedian, 6);
+        json.key("gpu_ms_min");
+        json.valueFixed(r.gpuMsMin, 6);
+        json.key("gpu_ms_max");
+        json.valueFixed(r.gpuMsMax, 6);
+        json.keyValue("device", r.device);
+        json.keyValue("driver", r.driver);
+        json.keyValue("patches", r.patches);
+        json.keyValue("frames", r.frames);
+        json.keyValue("metric", r.metric);
+        json.keyValue("target_px", r.targetPixels);
+        json.keyValue("continuous_level", r.continuousLevel);
+        json.endObject();
+    }
+    json.endArray();
+    return json.str() + "\n";
+}
+
+namespace {
+
+const TerrainBenchRecord* findRow(const std::vector<TerrainBenchRecord>& records, const TerrainBenchRecord& like,
+                                  const char* mode) {
+    for (const auto& r : records)
+        if (r.device == like.device && r.backend == like.backend && r.view == like.view && r.mode == mode) return &r;
+    return nullptr;
+}
+
+std::string format(const char* pattern, auto... args) {
+    char line[256];
+    std::snprintf(line, sizeof line, pattern, args...);
+    return line;
+}
+
+} // namespace
+
+std::string terrainBenchTable(const std::vector<TerrainBenchRecord>& records) {
+    std::string out = format("%-26s %-11s %-6s %-11s %12s %8s %10s %10s %10s\n", "device", "backend", "view", "mode",
+                             "triangles", "patches", "min ms", "median ms", "max ms");
+    for (const auto& r : records)
+        out += format("%-26.26s %-11s %-6s %-11s %12llu %8u %10.3f %10.3f %10.3f\n", r.device.c_str(), r.backend.c_str(),
+                      r.view.c_str(), r.mode.c_str(), static_cast<unsigned long long>(r.triangles), r.patches,
+                      r.gpuMsMin, r.gpuMsMedian, r.gpuMsMax);
+    out += "\nRatios to lowres in the same run (GPU median time, triangles):\n";
+    for (const auto& r : records) {
+        if (r.mode != "lowres") continue;
+        for (const char* mode : {"adaptive", "continuous"}) {
+            const TerrainBenchRecord* other = findRow(records, r, mode);
+            if (!other || r.gpuMsMedian <= 0.0 || r.triangles == 0) continue;
+            out += format("  %-26.26s %-11s %-6s %-10s %6.2fx time, %8.1fx triangles\n", r.device.c_str(),
+                          r.backend.c_str(), r.view.c_str(), mode, other->gpuMsMedian / r.gpuMsMedian,
+                          double(other->triangles) / double(r.triangles));
+        }
+    }
+    return out;
+}
+
+} // namespace tessera::demo
