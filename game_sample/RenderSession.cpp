@@ -134,6 +134,10 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
         TESSERA_CPU_SCOPE("render.submit");
         mScheduler->endFrame(readback, mSwapchain.get());
     }
+    auto& profiler = profiler::Profiler::global();
+    const backend::FrameReport report = backend.lastFrameReport();
+    profiler.recordCounter({"patches drawn", uint64_t(frameIndex), profiler.nowNs(), double(report.terrainPatchesDrawn)});
+    profiler.recordCounter({"craters splatted", uint64_t(frameIndex), profiler.nowNs(), double(report.splatsApplied)});
 }
 
 std::vector<uint8_t> RenderSession::finish() {

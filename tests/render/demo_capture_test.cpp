@@ -45,6 +45,6 @@ TEST(DemoCapture, TraceHasGpuPassesWithDurationAndCounters) {
     EXPECT_EQ(positive, gpuPasses) << "every GPU pass must have a measured duration";
 
     const std::string report = slurp(bench);
-    for (const char* key : {"terrain.lowres", "median", "llvmpipe", "hulldomain"})
+    for (const char* key : {"terrain.factors", "terrain.adaptive", "median", "llvmpipe", "hulldomain"})
         EXPECT_NE(report.find(key), std::string::npos) << key << " missing from the benchmark JSON";
 }
