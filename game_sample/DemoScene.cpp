@@ -5,6 +5,8 @@
 #include "tessera/scene/Camera.h"
 #include "tessera/terrain/HeightMapIO.h"
 
+#include <algorithm>
+
 namespace tessera::demo {
 
 namespace {
@@ -13,6 +15,7 @@ namespace {
 constexpr float kCameraClearance = 120.0f;
 // Meteors aim this far ahead of the camera, so the craters form in view.
 constexpr float kMeteorAimDistance = 700.0f;
+constexpr double kMeteorWindowSeconds = 60.0;
 
 } // namespace
 
@@ -40,12 +43,14 @@ Result<std::unique_ptr<DemoScene>> DemoScene::load(const DemoOptions& options, u
     scene->mFixedPose = options.camera;
 
     if (options.meteors > 0) {
-        const double duration = double(frames) * kSecondsPerFrame;
+        // Spread over the run (its last frame included), or over the first
+        // minute of an open-ended windowed run.
+        const double duration = std::min(double(frames > 1 ? frames - 1 : 0) * kSecondsPerFrame, kMeteorWindowSeconds);
         terrain::MeteorShowerSettings shower;
         shower.count = options.meteors;
         shower.seed = options.seed;
-        shower.startSeconds = 0.1 * duration;
-        shower.durationSeconds = 0.8 * duration;
+        shower.startSeconds = 0.05 * duration;
+        shower.durationSeconds = 0.9 * duration;
         shower.regionMin = pathSettings.regionMin;
         shower.regionMax = pathSettings.regionMax;
         const DemoScene& self = *scene;
