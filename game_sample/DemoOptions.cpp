@@ -125,8 +125,9 @@ Output:
   --warmup N            frames run first and left out of --benchmark (default 0)
   --dump-heights PREFIX after the last frame write the GPU and CPU copies of
                         the height map as PREFIX.gpu.png and PREFIX.cpu.png
-  --bench terrain       run the Table 2 benchmark (every mode, a far and a
-                        close-up view, every backend that draws the modes)
+  --bench terrain       run the Table 2 benchmark: a far and a close-up view,
+                        every mode (adaptive with every metric unless
+                        --tess-metric is given) on every device and backend
   --out FILE            where --bench writes its JSON (default: stdout)
   --help                this text
 )";
@@ -188,6 +189,7 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
             auto metric = terrain::parseTessMetric(v);
             if (!metric) return fail("--tess-metric expects screen, distance, silhouette or detail, got \"", v, "\"");
             o.tessellation.metric = *metric;
+            o.tessMetricGiven = true;
         }
         else if (flag == "--tess-target") {
             TESSERA_TAKE_NUMBER(tessellation.targetPixels, 0.25f, 1000.0f)

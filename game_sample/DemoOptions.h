@@ -48,6 +48,7 @@ struct DemoOptions {
     terrain::TessellationSettings tessellation;
     bool tessMaxGiven = false;
     bool tessTargetGiven = false;
+    bool tessMetricGiven = false;
     uint32_t meteors = 0;                         ///< --meteors N
     std::vector<terrain::CraterSplat> splats;     ///< --splat x,z,radius[,depth], before the first frame
 

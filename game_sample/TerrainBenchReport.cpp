@@ -24,6 +24,8 @@ std::string terrainBenchJson(const std::vector<TerrainBenchRecord>& records) {
         json.key("gpu_ms_max");
         json.valueFixed(r.gpuMsMax, 6);
         json.keyValue("device", r.device);
+        json.key("cpu_frame_ms_median");
+        json.valueFixed(r.cpuFrameMsMedian, 6);
         json.keyValue("driver", r.driver);
         json.keyValue("patches", r.patches);
         json.keyValue("frames", r.frames);
@@ -38,13 +40,6 @@ std::string terrainBenchJson(const std::vector<TerrainBenchRecord>& records) {
 
 namespace {
 
-const TerrainBenchRecord* findRow(const std::vector<TerrainBenchRecord>& records, const TerrainBenchRecord& like,
-                                  const char* mode) {
-    for (const auto& r : records)
-        if (r.device == like.device && r.backend == like.backend && r.view == like.view && r.mode == mode) return &r;
-    return nullptr;
-}
-
 std::string format(const char* pattern, auto... args) {
     char line[256];
     std::snprintf(line, sizeof line, pattern, args...);
@@ -54,21 +49,23 @@ std::string format(const char* pattern, auto... args) {
 } // namespace
 
 std::string terrainBenchTable(const std::vector<TerrainBenchRecord>& records) {
-    std::string out = format("%-26s %-11s %-6s %-11s %12s %8s %10s %10s %10s\n", "device", "backend", "view", "mode",
-                             "triangles", "patches", "min ms", "median ms", "max ms");
+    std::string out = format("%-26s %-11s %-6s %-11s %-10s %10s %7s %9s %9s %9s %9s\n", "device", "backend", "view",
+                             "mode", "metric", "triangles", "patches", "min ms", "median ms", "max ms", "cpu ms");
     for (const auto& r : records)
-        out += format("%-26.26s %-11s %-6s %-11s %12llu %8u %10.3f %10.3f %10.3f\n", r.device.c_str(), r.backend.c_str(),
-                      r.view.c_str(), r.mode.c_str(), static_cast<unsigned long long>(r.triangles), r.patches,
-                      r.gpuMsMin, r.gpuMsMedian, r.gpuMsMax);
+        out += format("%-26.26s %-11s %-6s %-11s %-10s %10llu %7u %9.3f %9.3f %9.3f %9.3f\n", r.device.c_str(),
+                      r.backend.c_str(), r.view.c_str(), r.mode.c_str(), r.metric.c_str(),
+                      static_cast<unsigned long long>(r.triangles), r.patches, r.gpuMsMin, r.gpuMsMedian, r.gpuMsMax,
+                      r.cpuFrameMsMedian);
     out += "\nRatios to lowres in the same run (GPU median time, triangles):\n";
-    for (const auto& r : records) {
-        if (r.mode != "lowres") continue;
-        for (const char* mode : {"adaptive", "continuous"}) {
-            const TerrainBenchRecord* other = findRow(records, r, mode);
-            if (!other || r.gpuMsMedian <= 0.0 || r.triangles == 0) continue;
-            out += format("  %-26.26s %-11s %-6s %-10s %6.2fx time, %8.1fx triangles\n", r.device.c_str(),
-                          r.backend.c_str(), r.view.c_str(), mode, other->gpuMsMedian / r.gpuMsMedian,
-                          double(other->triangles) / double(r.triangles));
+    for (const auto& base : records) {
+        if (base.mode != "lowres" || base.gpuMsMedian <= 0.0 || base.triangles == 0) continue;
+        for (const auto& r : records) {
+            if (r.mode == "lowres" || r.device != base.device || r.backend != base.backend || r.view != base.view)
+                continue;
+            const std::string what = r.mode == "adaptive" ? "adaptive/" + r.metric : r.mode;
+            out += format("  %-26.26s %-11s %-6s %-20s %6.2fx time, %8.1fx triangles\n", r.device.c_str(),
+                          r.backend.c_str(), r.view.c_str(), what.c_str(), r.gpuMsMedian / base.gpuMsMedian,
+                          double(r.triangles) / double(base.triangles));
         }
     }
     return out;

@@ -49,6 +49,52 @@ Result<std::vector<std::string>> deviceSelectors(const DemoOptions& options) {
     return selectors;
 }
 
+/// The options of each row of one backend: every mode it draws, adaptive once per metric
+/// (or only --tess-metric's), each metric at its default target unless
+/// --tess-target was given.
+std::vector<DemoOptions> benchRuns(const DemoOptions& options, const backend::BackendCapabilities& caps) {
+    std::vector<DemoOptions> runs;
+    for (auto mode : {terrain::TerrainMode::LowRes, terrain::TerrainMode::Continuous, terrain::TerrainMode::Adaptive}) {
+        if (!caps.drawsTerrainMode(mode)) continue;
+        std::vector<terrain::TessMetric> metrics = {options.tessellation.metric};
+        if (mode == terrain::TerrainMode::Adaptive && !options.tessMetricGiven)
+            metrics = {terrain::TessMetric::ScreenEdge, terrain::TessMetric::HeightDetail,
+                       terrain::TessMetric::Distance, terrain::TessMetric::Silhouette};
+        for (auto metric : metrics) {
+            DemoOptions run = options;
+            run.terrainMode = mode;
+            run.tessellation.metric = metric;
+            if (!options.tessTargetGiven) run.tessellation.targetPixels = terrain::defaultTargetPixels(metric);
+            runs.push_back(std::move(run));
+        }
+    }
+    return runs;
+}
+
+TerrainBenchRecord makeRecord(const RenderSession& session, const char* view,
+                              const terrain::TessellationSettings& settings, const profiler::BenchmarkSummary& summary) {
+    TerrainBenchRecord r;
+    r.backend = session.capabilities().name;
+    r.mode = terrain::toString(settings.mode);
+    r.view = view;
+    r.device = session.deviceName();
+    r.driver = session.driverName();
+    r.width = session.width();
+    r.height = session.height();
+    if (summary.gpuFrame.statsMedianFrame) r.triangles = profiler::trianglesOf(*summary.gpuFrame.statsMedianFrame);
+    r.patches = session.lastPatchCount();
+    r.gpuMsMedian = summary.gpuFrame.medianMs;
+    r.gpuMsMin = summary.gpuFrame.minMs;
+    r.gpuMsMax = summary.gpuFrame.maxMs;
+    r.cpuFrameMsMedian = summary.cpuFrame.medianMs;
+    r.frames = static_cast<uint32_t>(summary.gpuFrame.samples);
+    const bool adaptive = settings.mode == terrain::TerrainMode::Adaptive;
+    r.metric = adaptive ? terrain::toString(settings.metric) : "-";
+    r.targetPixels = adaptive ? settings.targetPixels : 0.0;
+    r.continuousLevel = settings.mode == terrain::TerrainMode::Continuous ? settings.continuousLevel : 0.0;
+    return r;
+}
+
 } // namespace
 
 Status runTerrainBenchmark(const DemoOptions& options) {
@@ -80,15 +126,13 @@ Status runTerrainBenchmark(const DemoOptions& options) {
             RenderSession& session = *created.value();
             const auto& caps = session.capabilities();
             run.tessellation.continuousLevel = std::min(run.tessellation.continuousLevel, caps.maxTessFactor);
+            run.tessMaxGiven = false;
             for (const BenchView& view : benchViews(ground)) {
                 scene::Camera camera;
                 camera.setPose(view.pose);
                 camera.setAspect(float(session.width()) / float(session.height()));
-                for (auto mode : {terrain::TerrainMode::LowRes, terrain::TerrainMode::Continuous,
-                                  terrain::TerrainMode::Adaptive}) {
-                    if (!caps.drawsTerrainMode(mode)) continue;
-                    run.terrainMode = mode;
-                    auto settings = session.resolveTessellation(run);
+                for (const DemoOptions& row : benchRuns(run, caps)) {
+                    auto settings = session.resolveTessellation(row);
                     if (!settings) return settings.error();
                     profiler.clear();
                     const uint32_t first = frameIndex;
@@ -99,28 +143,10 @@ Status runTerrainBenchmark(const DemoOptions& options) {
                     }
                     session.finish();
                     profiler.discardFramesBefore(first + warmup);
-                    const auto summary = profiler::summarize(profiler);
-                    TerrainBenchRecord r;
-                    r.backend = caps.name;
-                    r.mode = terrain::toString(mode);
-                    r.view = view.name;
-                    r.device = session.deviceName();
-                    r.driver = session.driverName();
-                    r.width = session.width();
-                    r.height = session.height();
-                    if (summary.gpuFrame.statsMedianFrame)
-                        r.triangles = profiler::trianglesOf(*summary.gpuFrame.statsMedianFrame);
-                    r.patches = session.lastPatchCount();
-                    r.gpuMsMedian = summary.gpuFrame.medianMs;
-                    r.gpuMsMin = summary.gpuFrame.minMs;
-                    r.gpuMsMax = summary.gpuFrame.maxMs;
-                    r.frames = static_cast<uint32_t>(summary.gpuFrame.samples);
-                    r.metric = terrain::toString(settings.value().metric);
-                    r.targetPixels = settings.value().targetPixels;
-                    r.continuousLevel = settings.value().continuousLevel;
-                    log::info(r.device + " " + r.backend + " " + r.view + " " + r.mode + ": " +
+                    records.push_back(makeRecord(session, view.name, settings.value(), profiler::summarize(profiler)));
+                    const TerrainBenchRecord& r = records.back();
+                    log::info(r.device + " " + r.backend + " " + r.view + " " + r.mode + " " + r.metric + ": " +
                               std::to_string(r.gpuMsMedian) + " ms, " + std::to_string(r.triangles) + " triangles");
-                    records.push_back(std::move(r));
                 }
             }
         }
