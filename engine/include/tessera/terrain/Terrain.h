@@ -48,6 +48,10 @@ public:
     /// Stamps a crater into the CPU copy, updates bounds and detail around it
     /// and queues it for the GPU copy. Returns the samples that may have changed.
     SampleRect splat(const CraterSplat& splat);
+    /// The same, from its parts: a crater of `radius` metres at world (x, z) = `center`.
+    SampleRect splat(glm::vec2 center, float radius, const CraterProfile& profile = {}) {
+        return splat(CraterSplat{center, radius, profile});
+    }
 
     /// Splats made since the last call, in order, for the renderer to apply
     /// to its GPU copy; clears the queue.
