@@ -83,7 +83,8 @@ int runDemo(const DemoOptions& options) {
         // Printed after every Vulkan object is gone, so messages from
         // destruction are counted too.
         const uint64_t messages = gpu::Instance::validationMessageCount();
-        std::printf("validation messages: %llu\n", static_cast<unsigned long long>(messages));
+        // On stderr, so stdout stays clean JSON for `--bench terrain` without --out.
+        std::fprintf(stderr, "validation messages: %llu\n", static_cast<unsigned long long>(messages));
         if (messages > 0 && code == 0) code = 1;
     }
     return code;

@@ -15,6 +15,13 @@ void expectCleanFailure(const std::vector<std::string>& args, const std::string&
     EXPECT_NE(run.output.find(expected), std::string::npos) << "expected \"" << expected << "\" in: " << run.output;
 }
 
+/// A bad command-line value: exit code 2 (usage error) and a message naming the flag.
+void expectUsageError(const std::vector<std::string>& args, const std::string& expected) {
+    auto run = runDemo(args);
+    EXPECT_EQ(run.exitCode, 2) << args.front() << ": crashed or wrong exit code: " << run.output;
+    EXPECT_NE(run.output.find(expected), std::string::npos) << "expected \"" << expected << "\" in: " << run.output;
+}
+
 } // namespace
 
 TEST(DemoCli, UnknownBackendNamesTheAvailableOnes) {
@@ -33,6 +40,23 @@ TEST(DemoCli, BadFlagsFailClearly) {
     expectCleanFailure({"--clear-color", "1,0"}, "--clear-color expects r,g,b");
     expectCleanFailure({"--clear-color", "2,0,0"}, "--clear-color expects r,g,b");
     expectCleanFailure({"--device", "no-such-gpu", "--backend", "r2vb"}, "--device no-such-gpu");
+}
+
+TEST(DemoCli, BadTerrainFlagsFailClearly) {
+    expectUsageError({"--terrain-mode", "bogus"},
+                     "--terrain-mode expects lowres, continuous or adaptive, got \"bogus\"");
+    expectUsageError({"--terrain-mode"}, "--terrain-mode needs a value");
+    expectUsageError({"--tess-metric", "bogus"}, "--tess-metric expects screen, distance, silhouette or detail");
+    expectUsageError({"--tess-target", "0"}, "--tess-target expects a number");
+    expectUsageError({"--tess-level", "abc"}, "--tess-level expects a number from 1 to 64, got \"abc\"");
+    expectUsageError({"--tess-max", "80"}, "--tess-max expects a number from 1 to 64");
+    expectUsageError({"--tess-distance", "0"}, "--tess-distance expects a number");
+    expectUsageError({"--splat", "1,2"}, "--splat expects x,z,radius[,depth]");
+    expectUsageError({"--splat", "1,2,-5"}, "--splat expects x,z,radius[,depth]");
+    expectUsageError({"--splat", "1,2,3,-1"}, "--splat expects x,z,radius[,depth]");
+    expectUsageError({"--splat", "a,b,c"}, "--splat expects x,z,radius[,depth]");
+    expectUsageError({"--bench", "foo"}, "--bench expects \"terrain\", got \"foo\"");
+    expectUsageError({"--meteors", "-1"}, "--meteors expects a whole number");
 }
 
 TEST(DemoCli, BadHeightMapNamesTheFile) {

@@ -44,7 +44,7 @@ TEST_P(GoldenImage, MatchesApprovedImageWithNoValidationMessages) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryBackend, GoldenImage, ::testing::Values("r2vb", "streamout", "hulldomain"),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& test) { return test.param; });
 
 TEST(DemoRun, FlythroughIsDeterministicForASeed) {
     auto shot = [&](const std::string& name) {

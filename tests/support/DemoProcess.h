@@ -28,8 +28,12 @@ inline ProcessResult runDemo(const std::vector<std::string>& args) {
     // exit, so the driver's own process-lifetime allocations show up as leaks
     // from "<unknown module>" that no suppression can name. Leak checking stays
     // on for the unit tests, which cover the engine without a driver.
-    std::string command = "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" " + shellQuote(TESSERA_DEMO_EXE);
-    for (const auto& a : args) command += " " + shellQuote(a);
+    std::string command = "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" ";
+    command += shellQuote(TESSERA_DEMO_EXE);
+    for (const auto& a : args) {
+        command += ' ';
+        command += shellQuote(a);
+    }
     command += " 2>&1";
     ProcessResult result;
     FILE* pipe = popen(command.c_str(), "r");
