@@ -11,9 +11,13 @@ Result<std::unique_ptr<GpuTerrain>> GpuTerrain::create(gpu::Device& device, cons
     const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
                                         VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT |
                                         VK_FORMAT_FEATURE_TRANSFER_SRC_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
-    if ((props.optimalTilingFeatures & needed) != needed)
+    VkFormatProperties bits{};
+    vkGetPhysicalDeviceFormatProperties(device.physical(), VK_FORMAT_R16_UINT, &bits);
+    const VkFormatFeatureFlags neededBits = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+    if ((props.optimalTilingFeatures & needed) != needed || (bits.optimalTilingFeatures & neededBits) != neededBits)
         return fail("device ", device.features().deviceName,
-                    " cannot render to and linearly sample R16_UNORM images, which the terrain's dynamic height map needs");
+                    " cannot render to and linearly sample R16_UNORM images (and their R16_UINT views), which the "
+                    "terrain's dynamic height map needs");
     return std::make_unique<GpuTerrain>(device, terrain);
 }
 
@@ -38,9 +42,12 @@ GpuTerrain::GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain) : m
     // (TerrainSplatPass), the D3D9 way, which every backend can do.
     image.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    image.aliasFormat = VK_FORMAT_R16_UINT; // exact integer writes for splats
     image.name = "terrain.heightMap";
     mHeightMap = gpu::Image(device, image);
     mHeightMap.upload(std::as_bytes(std::span(field.samples())), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    image.format = VK_FORMAT_R16_UINT; // read with texelFetch only
+    image.aliasFormat = VK_FORMAT_UNDEFINED;
     image.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     image.name = "terrain.heightScratch";
     mHeightScratch = gpu::Image(device, image);

@@ -35,9 +35,10 @@ public:
 
     const shader::TerrainUniforms& uniforms() const { return mUniforms; }
     gpu::Buffer& uniformBuffer() { return mUniformBuffer; }
-    /// R16_UNORM, SHADER_READ_ONLY_OPTIMAL between passes.
+    /// R16_UNORM (with an R16_UINT alias view for splats),
+    /// SHADER_READ_ONLY_OPTIMAL between passes.
     gpu::Image& heightMap() { return mHeightMap; }
-    /// Same size and format; holds the region a splat reads from.
+    /// Same size, R16_UINT; holds the region a splat reads from.
     gpu::Image& heightScratch() { return mHeightScratch; }
     gpu::Sampler& sampler() { return mSampler; }
     /// One control-mesh quad in patch-local [0,1]^2 (4 vertices, 6 indices),

@@ -18,8 +18,9 @@ TerrainSplatPass::TerrainSplatPass(gpu::Device& device, const std::string& backe
     desc.cullMode = VK_CULL_MODE_NONE;
     desc.depthTest = false;
     desc.depthWrite = false;
-    desc.colorFormats = {VK_FORMAT_R16_UNORM};
+    desc.colorFormats = {VK_FORMAT_R16_UINT}; // the height map's integer alias view
     mPipeline = gpu::Pipeline(device, desc);
+    mNearest = gpu::Sampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, backendName + ".terrainSplat.sampler");
 }
 
 void TerrainSplatPass::record(gpu::FrameContext& frame, GpuTerrain& terrain, std::span<const terrain::CraterSplat> splats) {
@@ -63,7 +64,7 @@ void TerrainSplatPass::splatOne(VkCommandBuffer cmd, GpuTerrain& terrain, const 
                          VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 
     VkRenderingAttachmentInfo attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    attachment.imageView = heights.view();
+    attachment.imageView = heights.aliasView();
     attachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     attachment.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
     attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
@@ -79,7 +80,7 @@ void TerrainSplatPass::splatOne(VkCommandBuffer cmd, GpuTerrain& terrain, const 
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &rendering.renderArea);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
-    VkDescriptorImageInfo source{terrain.sampler().handle(), scratch.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo source{mNearest.handle(), scratch.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstBinding = 0;
     write.descriptorCount = 1;

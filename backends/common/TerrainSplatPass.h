@@ -9,6 +9,7 @@
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/PipelineLayout.h"
+#include "tessera/gpu/Sampler.h"
 #include "tessera/terrain/CraterSplat.h"
 
 #include <span>
@@ -32,6 +33,7 @@ private:
     gpu::Device* mDevice = nullptr;
     gpu::PipelineLayout mLayout;
     gpu::Pipeline mPipeline;
+    gpu::Sampler mNearest; ///< integer texels are fetched, never filtered
 };
 
 } // namespace tessera::backends

@@ -29,14 +29,18 @@ TS_INLINE float tsCraterOffset(float x, float depth, float rim, float rimAt) {
     return rim * (1.0f - t * t * (3.0f - 2.0f * t));
 }
 
-/// The new normalised height of a sample at squared distance `distanceSq`
-/// (m^2) from the centre whose old normalised height is `oldHeight`. The
-/// caller converts to 16 bits by rounding to nearest, as UNORM writes do.
-TS_INLINE float tsApplyCrater(float oldHeight, float distanceSq, CraterSplatParams p) {
+/// The crater's change of a sample at squared distance `distanceSq` (m^2)
+/// from the centre, in 16-bit height units, rounded half up. Zero at and
+/// beyond the radius. Both copies add it to the sample as an integer
+/// (clamped to 0..65535): integer arithmetic after this point means the CPU
+/// and GPU copies can differ only where float rounding of the offset itself
+/// lands on the other side of a half unit, and differences cannot build up
+/// as craters overlap.
+TS_INLINE int tsCraterDelta(float distanceSq, CraterSplatParams p) {
     float radius = p.centerRadius.z;
-    if (distanceSq >= radius * radius) return oldHeight;
+    if (distanceSq >= radius * radius) return 0;
     float offset = tsCraterOffset(sqrt(distanceSq) / radius, p.profile.x, p.profile.y, p.profile.z);
-    return clamp(oldHeight + offset / p.profile.w, 0.0f, 1.0f);
+    return int(floor(offset / p.profile.w * 65535.0f + 0.5f));
 }
 
 TS_NAMESPACE_END

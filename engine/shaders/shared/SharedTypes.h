@@ -30,6 +30,7 @@ using mat4 = glm::mat4;
 using uint = uint32_t;
 using glm::clamp;
 using glm::dot;
+using glm::floor;
 using glm::length;
 using glm::max;
 using glm::min;

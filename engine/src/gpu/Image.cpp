@@ -49,6 +49,7 @@ Image::Image(Device& device, const ImageDesc& desc) : mDevice(&device), mDesc(de
     info.usage = desc.usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    if (desc.aliasFormat != VK_FORMAT_UNDEFINED) info.flags |= VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT;
     TESSERA_VK_CHECK(vkCreateImage(device.handle(), &info, nullptr, &mImage));
     device.setName(VK_OBJECT_TYPE_IMAGE, mImage, desc.name);
 
@@ -65,6 +66,11 @@ Image::Image(Device& device, const ImageDesc& desc) : mDevice(&device), mDesc(de
     view.subresourceRange = {aspect(), 0, desc.mipLevels, 0, 1};
     TESSERA_VK_CHECK(vkCreateImageView(device.handle(), &view, nullptr, &mView));
     device.setName(VK_OBJECT_TYPE_IMAGE_VIEW, mView, desc.name + ".view");
+    if (desc.aliasFormat != VK_FORMAT_UNDEFINED) {
+        view.format = desc.aliasFormat;
+        TESSERA_VK_CHECK(vkCreateImageView(device.handle(), &view, nullptr, &mAliasView));
+        device.setName(VK_OBJECT_TYPE_IMAGE_VIEW, mAliasView, desc.name + ".aliasView");
+    }
 }
 
 VkImageAspectFlags Image::aspect() const {
@@ -82,6 +88,7 @@ Image& Image::operator=(Image&& other) noexcept {
         mDesc = other.mDesc;
         mImage = std::exchange(other.mImage, VK_NULL_HANDLE);
         mView = std::exchange(other.mView, VK_NULL_HANDLE);
+        mAliasView = std::exchange(other.mAliasView, VK_NULL_HANDLE);
         mMemory = std::exchange(other.mMemory, VK_NULL_HANDLE);
         mAllocationSize = std::exchange(other.mAllocationSize, 0);
     }
@@ -91,11 +98,13 @@ Image& Image::operator=(Image&& other) noexcept {
 void Image::reset() {
     if (!mDevice) return;
     vkDestroyImageView(mDevice->handle(), mView, nullptr);
+    if (mAliasView) vkDestroyImageView(mDevice->handle(), mAliasView, nullptr);
     vkDestroyImage(mDevice->handle(), mImage, nullptr);
     mDevice->free(mMemory, mAllocationSize);
     mDevice = nullptr;
     mImage = VK_NULL_HANDLE;
     mView = VK_NULL_HANDLE;
+    mAliasView = VK_NULL_HANDLE;
     mMemory = VK_NULL_HANDLE;
 }
 

@@ -39,19 +39,18 @@ SampleRect applyCrater(HeightField& field, const CraterSplat& splat) {
         {splat.center.x, splat.center.y, splat.radius, spacing},
         {splat.profile.depth, splat.profile.rimHeight, splat.profile.rimAt, field.scale().heightScale}};
     // The GPU splat pass computes each texel the same way, in float: world
-    // position i * spacing, squared distance dx*dx + dz*dz, tsApplyCrater on
-    // the normalised value, round to nearest 16-bit UNORM. Samples at or beyond
-    // the radius are skipped rather than rewritten, so they stay bit-identical
-    // even if a round trip through float were not exact.
+    // position i * spacing, squared distance dx*dx + dz*dz, tsCraterDelta,
+    // then an integer add. Samples at or beyond the radius are skipped rather
+    // than rewritten, so they stay bit-identical.
     for (uint32_t j = rect.j0; j <= rect.j1; ++j) {
         const float dz = float(j) * spacing - splat.center.y;
         for (uint32_t i = rect.i0; i <= rect.i1; ++i) {
             const float dx = float(i) * spacing - splat.center.x;
             const float distanceSq = dx * dx + dz * dz;
             if (!(distanceSq < radiusSq)) continue;
-            const float oldNorm = float(field.samples()[size_t(j) * field.width() + i]) / 65535.0f;
-            const float newNorm = shader::tsApplyCrater(oldNorm, distanceSq, params);
-            field.setSample(i, j, static_cast<uint16_t>(std::lround(newNorm * 65535.0f)));
+            const int old = field.samples()[size_t(j) * field.width() + i];
+            const int changed = std::clamp(old + shader::tsCraterDelta(distanceSq, params), 0, 65535);
+            field.setSample(i, j, static_cast<uint16_t>(changed));
         }
     }
     return rect;

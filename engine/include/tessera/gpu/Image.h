@@ -19,6 +19,11 @@ struct ImageDesc {
     VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
     VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT;
     uint32_t mipLevels = 1;
+    /// When set, a second view in this size-compatible format (the image is
+    /// created MUTABLE_FORMAT), e.g. R16_UINT over R16_UNORM to read and
+    /// write exact bits where the UNORM conversion's rounding is not defined
+    /// tightly enough.
+    VkFormat aliasFormat = VK_FORMAT_UNDEFINED;
     std::string name;
 };
 
@@ -34,6 +39,8 @@ public:
 
     VkImage handle() const { return mImage; }
     VkImageView view() const { return mView; }
+    /// The view in ImageDesc::aliasFormat (VK_NULL_HANDLE without one).
+    VkImageView aliasView() const { return mAliasView; }
     VkFormat format() const { return mDesc.format; }
     uint32_t width() const { return mDesc.width; }
     uint32_t height() const { return mDesc.height; }
@@ -52,6 +59,7 @@ private:
     ImageDesc mDesc;
     VkImage mImage = VK_NULL_HANDLE;
     VkImageView mView = VK_NULL_HANDLE;
+    VkImageView mAliasView = VK_NULL_HANDLE;
     VkDeviceMemory mMemory = VK_NULL_HANDLE;
     VkDeviceSize mAllocationSize = 0;
 };

@@ -25,8 +25,8 @@ struct CraterSplat {
 };
 
 /// Applies `splat` to the samples of `field` strictly inside its radius with
-/// the shared formula (tsApplyCrater), rounding to the nearest 16-bit value
-/// as the GPU's UNORM write does, and returns the rectangle of samples that
+/// the shared formula (tsCraterDelta, added as an integer, as the GPU splat
+/// pass does through an R16_UINT view), and returns the rectangle of samples that
 /// may have changed (empty when the crater misses the field). Samples at or
 /// beyond the radius are never written.
 SampleRect applyCrater(HeightField& field, const CraterSplat& splat);
