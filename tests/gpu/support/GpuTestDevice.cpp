@@ -1,5 +1,7 @@
 #include "GpuTestDevice.h"
 
+#include <gtest/gtest.h>
+
 namespace tessera::test {
 
 namespace {
@@ -12,11 +14,21 @@ struct Shared {
 };
 
 Shared& shared() {
-    // Leaked on purpose: tests may run in any order and the device must
-    // outlive every fixture; the process exit releases it.
-    static Shared* s = new Shared();
-    return *s;
+    static Shared s;
+    return s;
 }
+
+// Releases the device and instance after the last test, while the Vulkan
+// loader and driver are still loaded (a static destructor would run too late).
+class ReleaseDevice : public ::testing::Environment {
+public:
+    void TearDown() override {
+        shared().device.reset();
+        shared().instance.reset();
+    }
+};
+
+[[maybe_unused]] ::testing::Environment* const kReleaseDevice = ::testing::AddGlobalTestEnvironment(new ReleaseDevice);
 
 } // namespace
 
