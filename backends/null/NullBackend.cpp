@@ -5,10 +5,11 @@
 #include "tessera/backend/PluginApi.h"
 #include "tessera/terrain/Terrain.h"
 #include "tessera/terrain/TessLevels.h"
+#include "tessera/tessellator/Tessellator.h"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace tessera::backends {
@@ -16,29 +17,15 @@ namespace {
 
 constexpr float kMaxTessFactor = 64.0f;
 
-// A level as fractional_odd spacing uses it: rounded up to an odd integer,
-// at most 63 (the largest odd level under the 64 maximum).
-uint64_t oddSegments(float level) {
-    const auto n = static_cast<uint64_t>(std::ceil(std::clamp(level, 1.0f, kMaxTessFactor - 1.0f)));
-    return n | 1u;
-}
-
-// Triangles the tessellator makes for one quad patch with fractional_odd
-// spacing. An estimate until the emulated tessellator lands and can be
-// counted exactly: a quad is 2 triangles when every level is 1; otherwise an
-// inner level of 1 counts as 3 (Vulkan's 1 + epsilon rule), the interior is a
-// (m0 - 2) x (m1 - 2) grid of quads, and each side's ring strip has one
-// triangle per outer segment plus one per inner-ring segment.
+// Triangles the GPU backends' tessellator makes for one terrain patch: a quad
+// with fractional_odd spacing, counted exactly by the emulated tessellator
+// (the paper's ComputeNumTessellatedPrimitives).
 uint64_t quadTriangles(const std::array<float, 4>& outer, const std::array<float, 2>& inner) {
-    std::array<uint64_t, 4> n{};
-    for (size_t s = 0; s < 4; ++s) n[s] = oddSegments(outer[s]);
-    uint64_t m0 = oddSegments(inner[0]), m1 = oddSegments(inner[1]);
-    if (m0 == 1 && m1 == 1 && n == std::array<uint64_t, 4>{1, 1, 1, 1}) return 2;
-    m0 = std::max<uint64_t>(m0, 3);
-    m1 = std::max<uint64_t>(m1, 3);
-    // Sides 1 and 3 run along u (inner[0]); sides 0 and 2 along v (inner[1]).
-    const uint64_t ring = (n[0] + m1 - 2) + (n[1] + m0 - 2) + (n[2] + m1 - 2) + (n[3] + m0 - 2);
-    return 2 * (m0 - 2) * (m1 - 2) + ring;
+    tessellator::TessFactors factors;
+    factors.outer = outer;
+    factors.inner = inner;
+    return tessellator::Tessellator::countTriangles(tessellator::Domain::Quad, tessellator::Partitioning::FractionalOdd,
+                                                    factors);
 }
 
 class NullBackend final : public backend::Backend {

@@ -1,8 +1,7 @@
 // The transform-feedback capture of the device's fixed-function tessellator:
 // known patterns come back exactly, so comparisons with the emulated
 // tessellator can trust it.
-#include "GpuTestDevice.h"
-#include "TessellationCapture.h"
+#include "TessellationCaptureFixture.h"
 
 #include <gtest/gtest.h>
 
@@ -20,24 +19,7 @@ std::set<std::tuple<float, float, float>> uniquePoints(const TessellationCapture
     return points;
 }
 
-class TessellationCaptureTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        std::string why;
-        device = GpuTestDevice::get(why);
-        if (!device) GTEST_SKIP() << "no Vulkan device: " << why;
-        const auto& f = device->features();
-        if (!f.tessellationShader || !f.transformFeedback || !f.pipelineStatistics)
-            GTEST_SKIP() << f.deviceName << " lacks tessellation, transform feedback or pipeline statistics";
-        capture = std::make_unique<TessellationCapture>(*device);
-    }
-    void TearDown() override {
-        capture.reset();
-        EXPECT_EQ(GpuTestDevice::validationMessages(), 0u);
-    }
-    gpu::Device* device = nullptr;
-    std::unique_ptr<TessellationCapture> capture;
-};
+using TessellationCaptureTest = TessellationCaptureFixture;
 
 // A triangle tessellated uniformly at integer level n is a set of concentric
 // rings with n, n-2, ... segments per side (down to a centre point or one
