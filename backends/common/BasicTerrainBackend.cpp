@@ -1,5 +1,7 @@
 #include "BasicTerrainBackend.h"
 
+#include "TessFactors.h"
+
 #include "FrameUniformsBuilder.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/RenderTarget.h"
@@ -24,6 +26,9 @@ void BasicTerrainBackend::checkRequirements(const backend::DeviceFeatures* devic
     if (caps.usesGeometryShaders && !device->geometryShader) caps.missing.push_back("geometry shaders (geometryShader)");
     if (caps.usesTransformFeedback && !device->transformFeedback)
         caps.missing.push_back("transform feedback (VK_EXT_transform_feedback)");
+    if (caps.tessellation == TessellationPath::Emulated && !device->multiDrawIndirect)
+        caps.missing.push_back("indirect draws with many commands and a first instance (multiDrawIndirect, "
+                               "drawIndirectFirstInstance)");
 }
 
 Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
@@ -160,6 +165,18 @@ void BasicTerrainBackend::pushTerrainDescriptors(VkPipelineBindPoint bindPoint, 
     writes.insert(writes.end(), extra.begin(), extra.end());
     mDevice->fn().cmdPushDescriptorSet(mFrame->cmd(), bindPoint, layout.handle(), 0, static_cast<uint32_t>(writes.size()),
                                        writes.data());
+}
+
+gpu::UniformSlice BasicTerrainBackend::pushTessUniforms(const GpuTerrain& terrain,
+                                                       const terrain::TessellationSettings& settings, float maxLevel) {
+    shader::TerrainTessUniforms tess{};
+    const float top = std::clamp(settings.maxLevel, 1.0f, maxLevel);
+    tess.levels = glm::vec4(std::clamp(settings.minLevel, 1.0f, top), top,
+                            std::clamp(settings.continuousLevel, 1.0f, maxLevel), 0.0f);
+    tess.metric = glm::vec4(settings.targetPixels, settings.farDistance, pixelsPerMetre(), 0.0f);
+    tess.mode = glm::uvec4(uint32_t(settings.mode), uint32_t(settings.metric), terrain.patchesPerSide(),
+                           terrain.edgeCount());
+    return mFrame->pushUniform(tess);
 }
 
 float BasicTerrainBackend::pixelsPerMetre() const {

@@ -57,6 +57,10 @@ protected:
                                 std::span<const VkWriteDescriptorSet> extra = {});
     /// Pixels one metre covers seen face-on from one metre away (the metrics' scale).
     float pixelsPerMetre() const;
+    /// This frame's shader::TerrainTessUniforms for a draw of `terrain`, with
+    /// every level clamped to [1, maxLevel] (the backend's maximum).
+    gpu::UniformSlice pushTessUniforms(const GpuTerrain& terrain, const terrain::TessellationSettings& settings,
+                                       float maxLevel);
 
     gpu::Device* mDevice = nullptr;
     gpu::FrameContext* mFrame = nullptr;

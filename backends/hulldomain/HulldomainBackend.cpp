@@ -74,13 +74,12 @@ protected:
     void drawTessellated(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw) override {
         const terrain::TessellationSettings& settings = draw.tessellation;
         const bool continuous = settings.mode == backend::TerrainMode::Continuous;
-        shader::TerrainTessUniforms tess{};
-        tess.levels = glm::vec4(std::clamp(settings.minLevel, 1.0f, settings.maxLevel), settings.maxLevel,
-                                std::clamp(settings.continuousLevel, 1.0f, 64.0f), 0.0f);
-        tess.metric = glm::vec4(settings.targetPixels, settings.farDistance, pixelsPerMetre(), 0.0f);
-        tess.mode = glm::uvec4(uint32_t(settings.mode), uint32_t(settings.metric), terrain.patchesPerSide(),
-                               terrain.edgeCount());
-        const gpu::UniformSlice tessUniforms = mFrame->pushUniform(tess);
+        const gpu::UniformSlice tessUniforms = pushTessUniforms(terrain, settings, 64.0f);
+        // The technique's intermediates: the pre-pass's level buffers, one
+        // pair per frame in flight.
+        mReport.intermediateBytes = 0;
+        for (uint32_t slot = 0; slot < gpu::kFramesInFlight; ++slot)
+            mReport.intermediateBytes += terrain.edgeLevels(slot).size() + terrain.patchLevels(slot).size();
         // Continuous mode has one level for the draw: no per-edge pre-pass.
         if (!continuous)
             mFactorPass.record(*mFrame, terrain, tessUniforms,

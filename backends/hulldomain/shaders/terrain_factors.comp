@@ -10,6 +10,7 @@
 #include "common_frame.glsl"
 #include "terrain_heightmap.glsl"
 #include "terrain_tess.glsl"
+#include "terrain_metric.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -20,42 +21,17 @@ layout(std430, set = 0, binding = TS_BINDING_PATCH_ERROR) readonly buffer PatchE
     float patchErrors[];
 };
 
-// The displaced surface at a control-mesh grid point.
-vec3 surfacePoint(vec2 grid) {
-    vec2 xz = grid * terrain.tiling.zw;
-    return vec3(xz.x, terrainHeight(xz), xz.y);
-}
-
-float clampLevel(float level) {
-    return clamp(level, tess.levels.x, tess.levels.y);
-}
-
 float edgeLevel(uint edge) {
     vec2 along;
     vec2 start = tsEdgeStart(edge, tess.mode.z, along);
-    vec3 a = surfacePoint(start);
-    vec3 b = surfacePoint(start + along);
-    vec3 eye = frame.cameraPosition.xyz;
-    float ppm = tess.metric.z;
-    float target = tess.metric.x;
-    uint metric = tess.mode.y;
-    if (metric == TS_METRIC_DISTANCE) return tsDistanceLevel(a, b, eye, tess.metric.y, tess.levels.x, tess.levels.y);
-    if (metric == TS_METRIC_SILHOUETTE) {
-        vec3 na = terrainNormal(a.xz);
-        vec3 nb = terrainNormal(b.xz);
-        return tsSilhouetteLevel(a, b, na, nb, eye, ppm, target);
-    }
-    if (metric == TS_METRIC_DETAIL) return tsDetailLevel(a, b, eye, edgeErrors[edge], ppm, target);
-    return tsScreenEdgeLevel(a, b, eye, ppm, target);
+    return terrainEdgeMetric(terrainSurfacePoint(start), terrainSurfacePoint(start + along), edgeErrors[edge]);
 }
 
 float patchLevel(uint patchIndex) {
-    if (tess.mode.y != TS_METRIC_DETAIL) return tess.levels.x;
     uint patches = tess.mode.z;
     vec2 corner = vec2(float(patchIndex % patches), float(patchIndex / patches));
-    vec3 c0 = surfacePoint(corner);
-    vec3 c1 = surfacePoint(corner + vec2(1.0));
-    return tsDetailLevel(c0, c1, frame.cameraPosition.xyz, patchErrors[patchIndex], tess.metric.z, tess.metric.x);
+    return terrainPatchMetric(terrainSurfacePoint(corner), terrainSurfacePoint(corner + vec2(1.0)),
+                              patchErrors[patchIndex]);
 }
 
 void main() {
@@ -63,8 +39,8 @@ void main() {
     uint edges = tess.mode.w;
     uint patchCount = tess.mode.z * tess.mode.z;
     if (id < edges) {
-        edgeLevels[id] = clampLevel(edgeLevel(id));
+        edgeLevels[id] = terrainClampLevel(edgeLevel(id));
     } else if (id < edges + patchCount) {
-        patchLevels[id - edges] = clampLevel(patchLevel(id - edges));
+        patchLevels[id - edges] = terrainClampLevel(patchLevel(id - edges));
     }
 }

@@ -4,7 +4,10 @@
 // edge. Inner levels take the larger of the opposite edges (and the patch's
 // own detail term). Continuous mode sets the one level of the draw.
 #extension GL_GOOGLE_include_directive : require
+#include "common_frame.glsl"
+#include "terrain_heightmap.glsl"
 #include "terrain_tess.glsl"
+#include "terrain_metric.glsl"
 
 layout(vertices = 1) out;
 layout(location = 0) in uint vPatch[];
@@ -35,6 +38,7 @@ void main() {
     gl_TessLevelOuter[1] = outer1;
     gl_TessLevelOuter[2] = outer2;
     gl_TessLevelOuter[3] = outer3;
-    gl_TessLevelInner[0] = max(max(outer1, outer3), own); // along u (X): the v = 0 and v = 1 edges
-    gl_TessLevelInner[1] = max(max(outer0, outer2), own); // along v (Z): the u = 0 and u = 1 edges
+    vec2 inner = terrainInnerLevels(vec4(outer0, outer1, outer2, outer3), own);
+    gl_TessLevelInner[0] = inner.x;
+    gl_TessLevelInner[1] = inner.y;
 }

@@ -10,6 +10,9 @@ layout(std140, set = 0, binding = TS_BINDING_TESS) uniform TessBlock {
     TerrainTessUniforms tess;
 };
 
+// Passes without the level buffers (the emulated backends) define
+// TS_NO_LEVEL_BUFFERS before including.
+#ifndef TS_NO_LEVEL_BUFFERS
 #ifdef TS_LEVELS_WRITE
 #define TS_LEVELS_ACCESS writeonly
 #else
@@ -22,5 +25,6 @@ layout(std430, set = 0, binding = TS_BINDING_PATCH_LEVELS) TS_LEVELS_ACCESS buff
     float patchLevels[];
 };
 #undef TS_LEVELS_ACCESS
+#endif
 
 #endif

@@ -54,6 +54,8 @@ Result<std::unique_ptr<Device>> Device::create(Instance& instance, const Physica
     core.fillModeNonSolid = want.fillModeNonSolid;
     core.pipelineStatisticsQuery = want.pipelineStatistics;
     core.vertexPipelineStoresAndAtomics = want.vertexStores;
+    core.multiDrawIndirect = want.multiDrawIndirect;
+    core.drawIndirectFirstInstance = want.multiDrawIndirect;
 
     VkPhysicalDeviceTransformFeedbackFeaturesEXT xfb{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_FEATURES_EXT};
     xfb.transformFeedback = VK_TRUE;

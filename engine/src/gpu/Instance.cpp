@@ -184,6 +184,7 @@ void Instance::enumerate() {
         f.timestamps = props.properties.limits.timestampComputeAndGraphics;
         f.fillModeNonSolid = features.features.fillModeNonSolid;
         f.vertexStores = features.features.vertexPipelineStoresAndAtomics;
+        f.multiDrawIndirect = features.features.multiDrawIndirect && features.features.drawIndirectFirstInstance;
         f.maxTessellationLevel = f.tessellationShader ? props.properties.limits.maxTessellationGenerationLevel : 0;
         mDevices.push_back(std::move(info));
     }

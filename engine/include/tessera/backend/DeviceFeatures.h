@@ -21,6 +21,7 @@ struct DeviceFeatures {
     bool timestamps = false;         ///< timestamp queries on the graphics queue
     bool fillModeNonSolid = false;   ///< wireframe
     bool vertexStores = false;       ///< storage writes from vertex/tess/geometry stages
+    bool multiDrawIndirect = false;  ///< indirect draws of many commands with a first instance (emulated tessellator)
     uint32_t maxTessellationLevel = 0;
 };
 

@@ -14,6 +14,9 @@ struct FrameReport {
     /// Triangles the backend submitted (before clipping), as it computes them.
     uint64_t trianglesSubmitted = 0;
     uint32_t passes = 0;
+    /// Bytes of the backend's intermediate buffers and render targets (cage,
+    /// factors, records, commands, pattern library), for the backend comparison.
+    uint64_t intermediateBytes = 0;
 };
 
 } // namespace tessera::backend

@@ -1,0 +1,101 @@
+#include "EmulatedTerrainBackend.h"
+
+#include "FrameUniforms.h"
+#include "TerrainUniforms.h"
+#include "TessPattern.h"
+#include "tessera/tessellator/PatternLibrary.h"
+
+#include "terrain_basic.frag.spv.h"
+#include "terrain_emulated.vert.spv.h"
+
+namespace tessera::backends {
+
+Status EmulatedTerrainBackend::initializeTechnique(const backend::BackendInitInfo& info) {
+    const std::string name = capabilities(nullptr).name;
+    // The pattern library is the emulated unit's fixed function: built once
+    // from the CPU tessellator's stitching rules and never touched again.
+    const tessellator::PatternLibrary& library = tessellator::PatternLibrary::quadFractionalOdd();
+    mPatternVertices = gpu::Buffer(*mDevice, library.vertices().size_bytes(), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                   gpu::MemoryUsage::GpuOnly, name + ".tessellator.patterns");
+    mPatternVertices.upload(library.vertices());
+    shader::TsEmuKeyTable keys{};
+    for (size_t k = 0; k < library.pieces().size(); ++k)
+        keys.pieces[k] = glm::uvec4(library.pieces()[k].firstVertex, library.pieces()[k].vertexCount, 0u, 0u);
+    mKeyTable = gpu::Buffer(*mDevice, sizeof keys, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
+                            name + ".tessellator.keys");
+    mKeyTable.upload(std::span<const shader::TsEmuKeyTable>(&keys, 1));
+
+    const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    mLayout = gpu::PipelineLayout(*mDevice,
+                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
+                                   {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
+                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
+                                   {TS_BINDING_EMU_RECORDS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER,
+                                    VK_SHADER_STAGE_VERTEX_BIT}},
+                                  sizeof(uint32_t), VK_SHADER_STAGE_VERTEX_BIT, name + ".terrainEmulated.layout");
+    gpu::GraphicsPipelineDesc desc;
+    desc.name = name + ".terrainEmulated.fill";
+    desc.layout = &mLayout;
+    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, terrain_emulated_vert_spv},
+                   {VK_SHADER_STAGE_FRAGMENT_BIT, terrain_basic_frag_spv}};
+    // One packed point reference per pattern vertex; the indirect commands'
+    // firstVertex selects the piece.
+    desc.vertexBindings = {{0, sizeof(uint32_t), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertexAttributes = {{0, 0, VK_FORMAT_R32_UINT, 0}};
+    desc.cullMode = VK_CULL_MODE_NONE;
+    desc.colorFormats = {static_cast<VkFormat>(info.colorFormat)};
+    desc.depthFormat = static_cast<VkFormat>(info.depthFormat);
+    mFillPipeline = gpu::Pipeline(*mDevice, desc);
+    if (mWireframeSupported) {
+        desc.name = name + ".terrainEmulated.wireframe";
+        desc.polygonMode = VK_POLYGON_MODE_LINE;
+        mWirePipeline = gpu::Pipeline(*mDevice, desc);
+    }
+    return initializeFactorPasses(info);
+}
+
+void EmulatedTerrainBackend::shutdownTechnique() {
+    shutdownFactorPasses();
+    mFillPipeline = {};
+    mWirePipeline = {};
+    mLayout = {};
+    mKeyTable = {};
+    mPatternVertices = {};
+}
+
+uint64_t EmulatedTerrainBackend::patternBytes() const {
+    return mPatternVertices.size() + mKeyTable.size();
+}
+
+void EmulatedTerrainBackend::drawTessellated(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw) {
+    const bool continuous = draw.tessellation.mode == backend::TerrainMode::Continuous;
+    const gpu::UniformSlice tessUniforms = pushTessUniforms(terrain, draw.tessellation, TS_EMU_MAX_LEVEL);
+    EmulatedDrawSource source;
+    if (!draw.visiblePatches.empty()) source = recordFactorPasses(terrain, draw, tessUniforms);
+    mReport.intermediateBytes = patternBytes() + factorPassBytes();
+
+    ensureMainPass();
+    gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");
+    if (draw.visiblePatches.empty() || source.records == VK_NULL_HANDLE) return;
+    VkCommandBuffer cmd = mFrame->cmd();
+    const bool wire = mFrameInfo.wireframe && mWirePipeline.valid();
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (wire ? mWirePipeline : mFillPipeline).handle());
+    VkWriteDescriptorSet records{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    records.dstBinding = TS_BINDING_EMU_RECORDS;
+    records.descriptorCount = 1;
+    records.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    records.pTexelBufferView = &source.records;
+    pushTerrainDescriptors(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, terrain, {&records, 1});
+    vkCmdPushConstants(cmd, mLayout.handle(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(uint32_t), &source.capacity);
+    const VkBuffer patterns = mPatternVertices.handle();
+    const VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &patterns, &offset);
+    // The emulated unit's output: five pattern pieces per superprimitive,
+    // each an indirect command the backend's own passes wrote on the GPU.
+    vkCmdDrawIndirect(cmd, source.commands, source.commandsOffset, source.capacity * TS_EMU_PIECES,
+                      sizeof(VkDrawIndirectCommand));
+    mReport.terrainPatchesDrawn += static_cast<uint32_t>(draw.visiblePatches.size());
+    ++mReport.passes;
+}
+
+} // namespace tessera::backends
