@@ -1,0 +1,58 @@
+#pragma once
+/// @file R2vbRecording.h
+/// Command-recording helpers every r2vb pass shares: batched barriers,
+/// rendering points into render targets, and the R2VB step itself (a
+/// render target's first rows copied to a buffer that later passes read as
+/// a vertex stream, texel buffer or indirect buffer).
+
+#include "tessera/gpu/Buffer.h"
+#include "tessera/gpu/Image.h"
+#include "tessera/gpu/Pipeline.h"
+#include "tessera/gpu/PipelineLayout.h"
+
+#include <vulkan/vulkan.h>
+
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace tessera::backends::r2vb {
+
+/// Pushes the frame, terrain and height-map bindings plus `extra` for a layout.
+using PushBindings = std::function<void(const gpu::PipelineLayout&, std::span<const VkWriteDescriptorSet>)>;
+
+/// A pipeline that renders one-pixel points into colour targets of
+/// `colorFormats`: no depth, no culling, viewport and scissor set by beginPoints.
+gpu::GraphicsPipelineDesc pointPipeline(const std::string& name, const gpu::PipelineLayout& layout,
+                                        std::span<const uint32_t> vertexSpirv, std::span<const uint32_t> fragmentSpirv,
+                                        std::vector<VkFormat> colorFormats);
+
+/// A descriptor write of one buffer (uniform or storage) at `binding`.
+VkWriteDescriptorSet bufferWrite(uint32_t binding, VkDescriptorType type, const VkDescriptorBufferInfo* info);
+
+/// A whole-image layout transition, to batch with barriers().
+VkImageMemoryBarrier2 imageBarrier(const gpu::Image& image, VkImageLayout from, VkImageLayout to,
+                                   VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
+                                   VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
+/// A whole-buffer memory dependency, to batch with barriers().
+VkBufferMemoryBarrier2 bufferBarrier(const gpu::Buffer& buffer, VkPipelineStageFlags2 srcStage,
+                                     VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage,
+                                     VkAccessFlags2 dstAccess);
+/// Records one vkCmdPipelineBarrier2 with all of them.
+void barriers(VkCommandBuffer cmd, std::span<const VkImageMemoryBarrier2> images,
+              std::span<const VkBufferMemoryBarrier2> buffers = {});
+
+/// Begins rendering into `targets` (all the same size, COLOR_ATTACHMENT_OPTIMAL),
+/// clearing their first `rows` rows to zero and rendering only those. The
+/// viewport is the whole target, so texel i is where r2vb_points.glsl puts
+/// point i; the target's size goes to the shaders as push constants of `layout`.
+void beginPoints(VkCommandBuffer cmd, std::span<gpu::Image* const> targets, uint32_t rows,
+                 const gpu::PipelineLayout& layout);
+
+/// The R2VB step: copies the first `rows` rows of `image` (TRANSFER_SRC_OPTIMAL)
+/// to `buffer` at `offset`, tightly packed, so texel i lands at element i.
+void copyRows(VkCommandBuffer cmd, const gpu::Image& image, uint32_t rows, const gpu::Buffer& buffer,
+              VkDeviceSize offset);
+
+} // namespace tessera::backends::r2vb
