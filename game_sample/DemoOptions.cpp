@@ -78,7 +78,9 @@ by default, on the best Vulkan device (a GPU, else lavapipe).
 
 Backend and device:
   --backend NAME        r2vb | streamout | hulldomain | null (default: the
-                        most capable backend the device can run)
+                        most capable backend the device can run); with
+                        --bench terrain also "all": every GPU backend side by
+                        side
   --list-backends       list backends and their capabilities on the device
   --device NAME|INDEX   pick a Vulkan device by index or name substring
   --list-devices        list Vulkan devices
@@ -127,8 +129,17 @@ Output:
                         the height map as PREFIX.gpu.png and PREFIX.cpu.png
   --bench terrain       run the Table 2 benchmark: a far and a close-up view,
                         every mode (adaptive with every metric unless
-                        --tess-metric is given) on every device and backend
+                        --tess-metric is given) on every device and backend.
+                        With --backend all: hulldomain, r2vb and streamout in
+                        one run at the emulated tessellator's maximum level
+                        (--tess-max 14.99), a Chrome trace per backend and a
+                        side-by-side table (GPU ms per pass, triangles,
+                        shader invocations, intermediate memory, ratios to
+                        hulldomain)
   --out FILE            where --bench writes its JSON (default: stdout)
+  --out-dir DIR         where --bench writes its per-backend traces,
+                        bench-<backend>.json (--backend all: default next to
+                        --out, else the current directory)
   --help                this text
 )";
 }
@@ -175,6 +186,7 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         else if (flag == "--benchmark") { TESSERA_TAKE(v); o.benchmark = v; }
         else if (flag == "--dump-heights") { TESSERA_TAKE(v); o.dumpHeights = v; }
         else if (flag == "--out") { TESSERA_TAKE(v); o.benchOut = v; }
+        else if (flag == "--out-dir") { TESSERA_TAKE(v); o.benchOutDir = v; }
         else if (flag == "--bench") {
             TESSERA_TAKE(v);
             if (v != "terrain") return fail("--bench expects \"terrain\", got \"", v, "\"");
@@ -196,7 +208,10 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
             o.tessTargetGiven = true;
         }
         else if (flag == "--tess-distance") TESSERA_TAKE_NUMBER(tessellation.farDistance, 1.0f, 1.0e6f)
-        else if (flag == "--tess-level") TESSERA_TAKE_NUMBER(tessellation.continuousLevel, 1.0f, 64.0f)
+        else if (flag == "--tess-level") {
+            TESSERA_TAKE_NUMBER(tessellation.continuousLevel, 1.0f, 64.0f)
+            o.tessLevelGiven = true;
+        }
         else if (flag == "--tess-max") {
             TESSERA_TAKE_NUMBER(tessellation.maxLevel, 1.0f, 64.0f)
             o.tessMaxGiven = true;
@@ -230,6 +245,8 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
 #undef TESSERA_TAKE_COUNT
 #undef TESSERA_TAKE
     }
+    if (o.backend == "all" && o.bench.empty())
+        return fail("--backend all compares the backends in --bench terrain; pick one backend for the demo");
     if (!o.tessTargetGiven) o.tessellation.targetPixels = terrain::defaultTargetPixels(o.tessellation.metric);
     if (o.window && !o.screenshot.empty() && o.frames == 0)
         return fail("--screenshot with --window needs --frames N to know which frame to capture");

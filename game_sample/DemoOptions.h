@@ -18,7 +18,7 @@
 namespace tessera::demo {
 
 struct DemoOptions {
-    std::string backend;                ///< empty: best backend the device runs
+    std::string backend;                ///< empty: best backend the device runs; "all" (--bench terrain only): every GPU backend
     std::string device;                 ///< --device NAME|INDEX
     std::vector<std::string> pluginDirs; ///< --plugin-dir (repeatable)
     std::string contentDir;             ///< --content DIR
@@ -47,6 +47,7 @@ struct DemoOptions {
     /// (mode is filled in once the backend is known).
     terrain::TessellationSettings tessellation;
     bool tessMaxGiven = false;
+    bool tessLevelGiven = false;
     bool tessTargetGiven = false;
     bool tessMetricGiven = false;
     uint32_t meteors = 0;                         ///< --meteors N
@@ -55,6 +56,10 @@ struct DemoOptions {
     /// --bench terrain: the Table 2 benchmark instead of the flythrough.
     std::string bench;
     std::string benchOut;               ///< --out FILE (default: stdout)
+    /// --out-dir DIR: where --bench terrain writes one Chrome trace per backend
+    /// (bench-<backend>.json). With --backend all they are written anyway:
+    /// next to --out, else in the current directory.
+    std::string benchOutDir;
 };
 
 /// Parses argv (without argv[0]).

@@ -5,9 +5,21 @@
 #include "tessera/profiler/CpuScope.h"
 #include "tessera/profiler/Profiler.h"
 
+#include <cstdio>
 #include <sstream>
 
 namespace tessera::demo {
+namespace {
+
+// A level as a user would write it: "14.99", "64".
+std::string formatLevel(float level) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", double(level));
+    return text;
+}
+
+} // namespace
+
 
 Result<std::unique_ptr<RenderSession>> RenderSession::create(const DemoOptions& options, terrain::Terrain& terrain) {
     std::unique_ptr<RenderSession> session(new RenderSession());
@@ -85,13 +97,19 @@ Result<terrain::TessellationSettings> RenderSession::resolveTessellation(const D
                                                                                : terrain::TerrainMode::LowRes;
     }
     if (settings.mode == terrain::TerrainMode::LowRes) return settings;
+    // A level the user asked for and the backend cannot draw is an error;
+    // the defaults (64, 15) are clamped to the backend's maximum instead, as
+    // D3D10-era hardware clamps to 14.99.
+    const std::string top = formatLevel(caps.maxTessFactor);
     if (options.tessMaxGiven && settings.maxLevel > caps.maxTessFactor)
-        return fail("--tess-max ", std::to_string(settings.maxLevel), ": backend ", caps.name, " tessellates up to level ",
-                    std::to_string(caps.maxTessFactor));
-    if (settings.mode == terrain::TerrainMode::Continuous && settings.continuousLevel > caps.maxTessFactor)
-        return fail("--tess-level ", std::to_string(settings.continuousLevel), ": backend ", caps.name,
-                    " tessellates up to level ", std::to_string(caps.maxTessFactor));
+        return fail("--tess-max ", formatLevel(settings.maxLevel), ": backend ", caps.name, " tessellates up to level ",
+                    top);
+    if (settings.mode == terrain::TerrainMode::Continuous && options.tessLevelGiven &&
+        settings.continuousLevel > caps.maxTessFactor)
+        return fail("--tess-level ", formatLevel(settings.continuousLevel), ": backend ", caps.name,
+                    " tessellates up to level ", top);
     settings.maxLevel = std::min(settings.maxLevel, caps.maxTessFactor);
+    settings.continuousLevel = std::min(settings.continuousLevel, caps.maxTessFactor);
     return settings;
 }
 

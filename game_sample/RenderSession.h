@@ -46,6 +46,9 @@ public:
                      const glm::vec3& clearColor, bool wireframe, bool readback);
     /// Waits for the GPU; the last read-back image (RGBA8), empty if none.
     std::vector<uint8_t> finish();
+    /// The backend's own account of its last recorded frame (intermediate
+    /// buffer bytes, patches, passes).
+    backend::FrameReport lastFrameReport() const { return mSelected->backend->lastFrameReport(); }
     /// Patches that survived culling in the last frame.
     uint32_t lastPatchCount() const { return static_cast<uint32_t>(mVisible.size()); }
     /// The GPU copy of the height map (blocking).

@@ -1,13 +1,23 @@
-// streamout: the D3D10-style backend. Transform feedback, instancing,
-// geometry-shader culling and LOD binning, and draw-auto
-// (vkCmdDrawIndirectByteCountEXT), in front of the emulated tessellator.
-#include "BasicTerrainBackend.h"
+// streamout: the D3D10-style backend. Transform feedback, geometry-shader
+// culling, draw-auto (vkCmdDrawIndirectByteCountEXT) and instanced draws
+// with buffer loads, in front of the emulated tessellator; no tessellation
+// stages and no compute. Each tessellated frame:
+//   streamout.cage     the control mesh, displaced once, captured by transform feedback
+//   streamout.cull     a geometry shader drops patches outside the frustum, streams out the rest
+//   streamout.factors  draw-auto over the survivors: levels and tessellator commands, streamed out
+// then EmulatedTerrainBackend draws the pattern pieces with one indirect draw.
+#include "EmulatedTerrainBackend.h"
+#include "StreamoutBuffers.h"
+#include "StreamoutCagePass.h"
+#include "StreamoutCullPass.h"
+#include "StreamoutFactorPass.h"
+#include "StreamoutRecording.h"
 #include "tessera/backend/PluginApi.h"
 
 namespace tessera::backends {
 namespace {
 
-class StreamoutBackend final : public BasicTerrainBackend {
+class StreamoutBackend final : public EmulatedTerrainBackend {
 public:
     backend::BackendCapabilities capabilities(const backend::DeviceFeatures* device) override {
         backend::BackendCapabilities caps;
@@ -17,9 +27,61 @@ public:
         caps.usesTransformFeedback = true;
         caps.usesGeometryShaders = true;
         caps.maxTessFactor = 14.99f;
+        caps.terrainModes = 0b111;
         checkRequirements(device, caps);
         return caps;
     }
+
+protected:
+    Status initializeFactorPasses(const backend::BackendInitInfo&) override {
+        if (Status limits = StreamoutFactorPass::checkDevice(*mDevice); !limits) return limits;
+        mBuffers = StreamoutBuffers(*mDevice);
+        mCagePass = StreamoutCagePass(*mDevice);
+        mCullPass = StreamoutCullPass(*mDevice);
+        mFactorPass = StreamoutFactorPass(*mDevice);
+        return {};
+    }
+
+    void shutdownFactorPasses() override {
+        mFactorPass = {};
+        mCullPass = {};
+        mCagePass = {};
+        mBuffers = {};
+    }
+
+    EmulatedDrawSource recordFactorPasses(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw,
+                                          const gpu::UniformSlice& tessUniforms) override {
+        StreamoutBuffers::Slot& buffers = mBuffers.prepare(mFrame->slot(), terrain.patchesPerSide());
+        const StreamoutPassInputs in{
+            *mFrame, terrain, buffers, tessUniforms,
+            [this, &terrain](const gpu::PipelineLayout& layout, std::span<const VkWriteDescriptorSet> extra) {
+                pushTerrainDescriptors(VK_PIPELINE_BIND_POINT_GRAPHICS, layout, terrain, extra);
+            }};
+        // A terrain drawn earlier in this frame may still be reading these
+        // buffers (its emulated draw, its passes): finish that before they
+        // are cleared and streamed into again.
+        streamout::memoryBarrier(
+            mFrame->cmd(),
+            VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT |
+                VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT |
+                VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
+            VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT | VK_ACCESS_2_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT,
+            VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+            VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT | VK_ACCESS_2_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT |
+                VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        mCagePass.record(in);
+        mCullPass.record(in, draw.visiblePatches);
+        mFactorPass.record(in, emuKeyTable());
+        return {buffers.recordsView.handle(), buffers.capacity, buffers.commands.handle(), 0};
+    }
+
+    uint64_t factorPassBytes() const override { return mBuffers.bytes(); }
+
+private:
+    StreamoutBuffers mBuffers;
+    StreamoutCagePass mCagePass;
+    StreamoutCullPass mCullPass;
+    StreamoutFactorPass mFactorPass;
 };
 
 backend::Backend* create() { return new StreamoutBackend(); }

@@ -26,10 +26,19 @@ TEST(PipelineStatistics, TrianglesPreferClippedPrimitives) {
     s.clippingPrimitives = 40;
     EXPECT_EQ(trianglesOf(s), 40u);
     s.clippingPrimitives = 0; // No clipping counts, no tessellation: IA triangles.
+    s.fragmentShaderInvocations = 500;
     EXPECT_EQ(trianglesOf(s), 10u);
     s.tessEvaluationInvocations = 99; // Tessellated: IA primitives are patches.
     EXPECT_EQ(trianglesOf(s), 0u);
     EXPECT_EQ(trianglesOf(PipelineStatistics{}), 0u);
+}
+
+TEST(PipelineStatistics, StreamOutPassesHaveNoTriangles) {
+    // Rasterizer discard: points in, nothing reaches the clipper or fragments.
+    PipelineStatistics s;
+    s.inputAssemblyPrimitives = 1089;
+    s.vertexShaderInvocations = 1089;
+    EXPECT_EQ(trianglesOf(s), 0u);
 }
 
 TEST(PipelineStatistics, SumsEveryCounter) {

@@ -68,9 +68,12 @@ constexpr PipelineStatistics& operator+=(PipelineStatistics& lhs, const Pipeline
 ///   tessellation they are patches, and counting patches as triangles would
 ///   be off by the tessellation factor, so such a pass reports 0 (everything
 ///   clipped or culled).
-/// - Compute passes report 0.
+/// - Compute passes, and passes whose primitives never reach the clipper
+///   (rasterizer discard: transform-feedback and stream-out passes), report 0:
+///   their input points are data, not triangles.
 constexpr uint64_t trianglesOf(const PipelineStatistics& s) {
     if (s.clippingPrimitives != 0) return s.clippingPrimitives;
+    if (s.clippingInvocations == 0 && s.fragmentShaderInvocations == 0) return 0;
     bool amplified = s.tessControlPatches != 0 || s.tessEvaluationInvocations != 0 ||
                      s.geometryShaderInvocations != 0;
     return amplified ? 0 : s.inputAssemblyPrimitives;

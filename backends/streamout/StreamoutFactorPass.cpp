@@ -1,0 +1,122 @@
+#include "StreamoutFactorPass.h"
+
+#include "FrameUniforms.h"
+#include "StreamoutRecording.h"
+#include "TerrainUniforms.h"
+#include "TessFactors.h"
+#include "TessPattern.h"
+#include "streamout_bindings.h"
+
+#include "streamout_factors.vert.spv.h"
+
+#include <string>
+
+namespace tessera::backends {
+
+namespace {
+
+// What one invocation streams out (streamout_factors.vert).
+constexpr uint32_t kStreams = 3;
+constexpr uint32_t kTexelBytes = 16;
+constexpr uint32_t kCommandBytes = TS_EMU_PIECES * sizeof(VkDrawIndirectCommand);
+constexpr uint32_t kBytesPerVertex = 2 * kTexelBytes + kCommandBytes;
+
+} // namespace
+
+Status StreamoutFactorPass::checkDevice(const gpu::Device& device) {
+    VkPhysicalDeviceTransformFeedbackPropertiesEXT xfb{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_PROPERTIES_EXT};
+    VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &xfb};
+    vkGetPhysicalDeviceProperties2(device.physical(), &properties);
+    const std::string prefix = "streamout: " + device.features().deviceName + "'s transform feedback ";
+    if (!xfb.transformFeedbackDraw) return fail(prefix, "cannot draw from a stream's counter (transformFeedbackDraw)");
+    if (xfb.maxTransformFeedbackBuffers < kStreams)
+        return fail(prefix, "binds ", std::to_string(xfb.maxTransformFeedbackBuffers),
+                    " buffers; the factor pass writes ", std::to_string(kStreams));
+    if (xfb.maxTransformFeedbackBufferDataStride < kCommandBytes ||
+        xfb.maxTransformFeedbackStreamDataSize < kBytesPerVertex)
+        return fail(prefix, "cannot write ", std::to_string(kBytesPerVertex), " bytes per vertex (",
+                    std::to_string(kCommandBytes), " to one buffer)");
+    return {};
+}
+
+StreamoutFactorPass::StreamoutFactorPass(gpu::Device& device) {
+    const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
+    mLayout = gpu::PipelineLayout(device,
+                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
+                                   {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
+                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
+                                   {TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
+                                   {TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vertex},
+                                   {TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vertex},
+                                   {TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
+                                   {SO_BINDING_CAGE, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex}},
+                                  0, 0, "streamout.factors.layout");
+    gpu::GraphicsPipelineDesc desc;
+    desc.name = "streamout.factors";
+    desc.layout = &mLayout;
+    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, streamout_factors_vert_spv}};
+    // The survivors' stream, one point per surviving patch.
+    desc.vertexBindings = {{0, sizeof(uint32_t), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertexAttributes = {{0, 0, VK_FORMAT_R32_UINT, 0}};
+    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+    desc.cullMode = VK_CULL_MODE_NONE;
+    desc.depthTest = false;
+    desc.depthWrite = false;
+    desc.rasterizerDiscard = true;
+    mPipeline = gpu::Pipeline(device, desc);
+}
+
+void StreamoutFactorPass::record(const StreamoutPassInputs& in, const gpu::Buffer& keyTable) {
+    gpu::PassScope pass(in.frame, "streamout.factors");
+    VkCommandBuffer cmd = in.frame.cmd();
+    const auto& fn = in.frame.device().fn();
+    const StreamoutBuffers::Slot& buffers = in.buffers;
+    const uint32_t slot = in.frame.slot();
+
+    // Commands past the survivors must draw nothing; stream output writes
+    // only the survivors' records.
+    vkCmdFillBuffer(cmd, buffers.commands.handle(), 0, VK_WHOLE_SIZE, 0);
+    streamout::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                             VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
+                             VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT);
+
+    streamout::beginStreamOut(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
+    const VkDescriptorBufferInfo tess = in.tessUniforms.descriptor();
+    const VkDescriptorBufferInfo edgeErrors{in.terrain.edgeErrors(slot).handle(), 0, VK_WHOLE_SIZE};
+    const VkDescriptorBufferInfo patchErrors{in.terrain.patchErrors(slot).handle(), 0, VK_WHOLE_SIZE};
+    const VkDescriptorBufferInfo keys{keyTable.handle(), 0, VK_WHOLE_SIZE};
+    const VkBufferView cage = buffers.cageView.handle();
+    const VkWriteDescriptorSet writes[5] = {
+        streamout::bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess),
+        streamout::bufferWrite(TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &edgeErrors),
+        streamout::bufferWrite(TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &patchErrors),
+        streamout::bufferWrite(TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &keys),
+        streamout::texelWrite(SO_BINDING_CAGE, &cage)};
+    in.pushBindings(mLayout, writes);
+    const VkBuffer survivors = buffers.survivors.handle();
+    const VkDeviceSize zero = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &survivors, &zero);
+
+    // Streams 0 and 1 are the two halves of the records buffer (texel r and
+    // capacity + r), stream 2 the commands.
+    const VkDeviceSize half = VkDeviceSize(buffers.capacity) * kTexelBytes;
+    const VkBuffer targets[kStreams] = {buffers.records.handle(), buffers.records.handle(), buffers.commands.handle()};
+    const VkDeviceSize offsets[kStreams] = {0, half, 0};
+    const VkDeviceSize sizes[kStreams] = {half, half, buffers.commands.size()};
+    fn.cmdBindTransformFeedbackBuffers(cmd, 0, kStreams, targets, offsets, sizes);
+    fn.cmdBeginTransformFeedback(cmd, 0, 0, nullptr, nullptr);
+    // Draw-auto: the vertex count is the cull pass's counter / 4 bytes.
+    fn.cmdDrawIndirectByteCount(cmd, 1, 0, buffers.counter.handle(), 0, 0, sizeof(uint32_t));
+    fn.cmdEndTransformFeedback(cmd, 0, 0, nullptr, nullptr);
+    streamout::endStreamOut(cmd);
+
+    // The clear too: the commands past the survivors keep its zeros.
+    streamout::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                             VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                             VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
+                             VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+}
+
+} // namespace tessera::backends
