@@ -3,10 +3,13 @@
 #include "FrameUniforms.h"
 #include "TerrainUniforms.h"
 #include "TessPattern.h"
+#include "tessera/terrain/Terrain.h"
 #include "tessera/tessellator/PatternLibrary.h"
 
 #include "terrain_basic.frag.spv.h"
 #include "terrain_emulated.vert.spv.h"
+
+#include <string>
 
 namespace tessera::backends {
 
@@ -61,6 +64,18 @@ void EmulatedTerrainBackend::shutdownTechnique() {
     mLayout = {};
     mKeyTable = {};
     mPatternVertices = {};
+}
+
+Result<backend::TerrainHandle> EmulatedTerrainBackend::createTerrain(const backend::TerrainDesc& desc) {
+    if (desc.terrain) {
+        const uint64_t texels = 2ull * desc.terrain->grid().patchCount();
+        const uint32_t limit = mDevice->properties().limits.maxTexelBufferElements;
+        if (texels > limit)
+            return fail("backend ", capabilities(nullptr).name, ": a terrain of ",
+                        std::to_string(desc.terrain->grid().patchCount()), " patches needs ", std::to_string(texels),
+                        " record texels, more than this device's maxTexelBufferElements (", std::to_string(limit), ")");
+    }
+    return BasicTerrainBackend::createTerrain(desc);
 }
 
 uint64_t EmulatedTerrainBackend::patternBytes() const {

@@ -32,6 +32,11 @@ struct EmulatedDrawSource {
 };
 
 class EmulatedTerrainBackend : public BasicTerrainBackend {
+public:
+    /// Also fails, naming the limit, when the terrain has more patches than
+    /// a records texel buffer can hold on this device (2 texels per patch).
+    Result<backend::TerrainHandle> createTerrain(const backend::TerrainDesc& desc) override;
+
 protected:
     Status initializeTechnique(const backend::BackendInitInfo& info) final;
     void shutdownTechnique() final;
