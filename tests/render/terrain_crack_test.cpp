@@ -76,9 +76,10 @@ std::vector<std::string> forBackend(const std::string& backend, std::vector<std:
         auto it = std::find(args.begin(), args.end(), flag);
         return it == args.end() || it + 1 == args.end() ? nullptr : &*(it + 1);
     };
-    const std::string* mode = value("--terrain-mode");
-    if (mode && *mode == "adaptive" && !value("--tess-max")) args.insert(args.end(), {"--tess-max", "14.99"});
-    if (mode && *mode == "continuous") {
+    // A copy: inserting into args would leave a pointer into it dangling.
+    const std::string mode = value("--terrain-mode") ? *value("--terrain-mode") : std::string();
+    if (mode == "adaptive" && !value("--tess-max")) args.insert(args.end(), {"--tess-max", "14.99"});
+    if (mode == "continuous") {
         std::string* level = value("--tess-level");
         if (!level)
             args.insert(args.end(), {"--tess-level", "14.99"}); // the default, 15, is above the range
