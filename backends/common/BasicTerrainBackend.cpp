@@ -107,6 +107,7 @@ void BasicTerrainBackend::beginFrame(const backend::FrameInfo& frame) {
     mReport.frameIndex = frame.frameIndex;
     mFrameUniforms = mFrame->pushUniform(buildFrameUniforms(frame));
     mMainPassOpen = false;
+    mMainPassStarted = false;
 }
 
 void BasicTerrainBackend::splatTerrain(backend::TerrainHandle handle, std::span<const terrain::CraterSplat> splats) {
@@ -114,19 +115,27 @@ void BasicTerrainBackend::splatTerrain(backend::TerrainHandle handle, std::span<
     if (!terrain || splats.empty()) return;
     // Splats render into the height map, so they must come before the main
     // pass (and before this frame's factor passes) reads it.
-    if (mMainPassOpen) {
-        mFrame->target().endRendering(mFrame->cmd());
-        mMainPassOpen = false;
-    }
+    suspendMainPass();
     mSplatPass.record(*mFrame, *terrain, splats);
     mReport.splatsApplied += static_cast<uint32_t>(splats.size());
 }
 
 void BasicTerrainBackend::ensureMainPass() {
     if (mMainPassOpen) return;
-    const float clear[4] = {mFrameInfo.clearColor.r, mFrameInfo.clearColor.g, mFrameInfo.clearColor.b, 1.0f};
-    mFrame->target().beginRendering(mFrame->cmd(), clear);
+    if (mMainPassStarted) {
+        mFrame->target().resumeRendering(mFrame->cmd());
+    } else {
+        const float clear[4] = {mFrameInfo.clearColor.r, mFrameInfo.clearColor.g, mFrameInfo.clearColor.b, 1.0f};
+        mFrame->target().beginRendering(mFrame->cmd(), clear);
+    }
     mMainPassOpen = true;
+    mMainPassStarted = true;
+}
+
+void BasicTerrainBackend::suspendMainPass() {
+    if (!mMainPassOpen) return;
+    mFrame->target().endRendering(mFrame->cmd());
+    mMainPassOpen = false;
 }
 
 void BasicTerrainBackend::drawTerrain(backend::TerrainHandle handle, const backend::TerrainDrawInfo& draw) {

@@ -47,8 +47,11 @@ protected:
     /// backend's capabilities list, with maxLevel already clamped to its maximum.
     virtual void drawTessellated(GpuTerrain&, const backend::TerrainDrawInfo&) {}
 
-    /// Opens the main pass into the host's target if it is not open yet.
+    /// Opens the main pass into the host's target if it is not open yet
+    /// (clearing it the first time in a frame, keeping its contents after).
     void ensureMainPass();
+    /// Closes the main pass if open, so an off-target pass can run.
+    void suspendMainPass();
     /// Draws the visible patches of `terrain` as the untessellated control mesh.
     void drawControlMesh(GpuTerrain& terrain, std::span<const uint32_t> patches, const char* passName);
     /// Pushes the frame, terrain and height-map bindings (set 0, bindings
@@ -79,6 +82,7 @@ private:
     TerrainSplatPass mSplatPass;
     std::vector<std::unique_ptr<GpuTerrain>> mTerrains;
     bool mMainPassOpen = false;
+    bool mMainPassStarted = false;
 };
 
 } // namespace tessera::backends

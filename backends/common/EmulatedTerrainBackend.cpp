@@ -54,11 +54,14 @@ Status EmulatedTerrainBackend::initializeTechnique(const backend::BackendInitInf
         desc.polygonMode = VK_POLYGON_MODE_LINE;
         mWirePipeline = gpu::Pipeline(*mDevice, desc);
     }
+    mCharacterPass = EmulatedCharacterPass(*mDevice, name, static_cast<VkFormat>(info.colorFormat),
+                                           static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
     return initializeFactorPasses(info);
 }
 
 void EmulatedTerrainBackend::shutdownTechnique() {
     shutdownFactorPasses();
+    mCharacterPass = {};
     mFillPipeline = {};
     mWirePipeline = {};
     mLayout = {};
@@ -76,6 +79,15 @@ Result<backend::TerrainHandle> EmulatedTerrainBackend::createTerrain(const backe
                         " record texels, more than this device's maxTexelBufferElements (", std::to_string(limit), ")");
     }
     return BasicTerrainBackend::createTerrain(desc);
+}
+
+void EmulatedTerrainBackend::beginFrame(const backend::FrameInfo& frame) {
+    BasicCharacterBackend::beginFrame(frame);
+    mCharacterPass.beginFrame(mFrame->slot());
+}
+
+void EmulatedTerrainBackend::drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) {
+    mCharacterPass.record(*mFrame, instance, path, mFrameInfo.wireframe, characterPush());
 }
 
 uint64_t EmulatedTerrainBackend::patternBytes() const {

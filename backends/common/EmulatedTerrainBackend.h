@@ -17,7 +17,8 @@
 ///    emulated_tess.glsl (firstInstance = r * 5 + c). Unused commands must be
 ///    all zero (they draw nothing).
 
-#include "BasicTerrainBackend.h"
+#include "BasicCharacterBackend.h"
+#include "EmulatedCharacterPass.h"
 #include "tessera/gpu/Buffer.h"
 
 #include <cstdint>
@@ -31,16 +32,20 @@ struct EmulatedDrawSource {
     VkDeviceSize commandsOffset = 0;
 };
 
-class EmulatedTerrainBackend : public BasicTerrainBackend {
+class EmulatedTerrainBackend : public BasicCharacterBackend {
 public:
     /// Also fails, naming the limit, when the terrain has more patches than
     /// a records texel buffer can hold on this device (2 texels per patch).
     Result<backend::TerrainHandle> createTerrain(const backend::TerrainDesc& desc) override;
+    void beginFrame(const backend::FrameInfo& frame) override;
 
 protected:
     Status initializeTechnique(const backend::BackendInitInfo& info) final;
     void shutdownTechnique() final;
     void drawTessellated(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw) final;
+    /// Characters: the emulated tessellator's pattern per level, instanced per
+    /// cage triangle (EmulatedCharacterPass); pass 1 is each backend's own.
+    void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) final;
 
     /// Creates the backend's own factor passes.
     virtual Status initializeFactorPasses(const backend::BackendInitInfo& info) = 0;
@@ -68,6 +73,7 @@ private:
     gpu::PipelineLayout mLayout;
     gpu::Pipeline mFillPipeline;
     gpu::Pipeline mWirePipeline;
+    EmulatedCharacterPass mCharacterPass;
 };
 
 } // namespace tessera::backends

@@ -1,7 +1,9 @@
 // hulldomain: the D3D11-style backend. A compute pre-pass writes one
 // tessellation level per control-mesh edge; tessellation control (hull) and
 // evaluation (domain) shaders draw the patches with levels up to 64.
-#include "BasicTerrainBackend.h"
+#include "BasicCharacterBackend.h"
+#include "CharacterPatchPass.h"
+#include "CharacterSkinPass.h"
 #include "FrameUniforms.h"
 #include "TessFactorPass.h"
 #include "tessera/backend/PluginApi.h"
@@ -14,7 +16,7 @@
 namespace tessera::backends {
 namespace {
 
-class HulldomainBackend final : public BasicTerrainBackend {
+class HulldomainBackend final : public BasicCharacterBackend {
 public:
     backend::BackendCapabilities capabilities(const backend::DeviceFeatures* device) override {
         backend::BackendCapabilities caps;
@@ -31,6 +33,9 @@ public:
 protected:
     Status initializeTechnique(const backend::BackendInitInfo& info) override {
         mFactorPass = TessFactorPass(*mDevice, "hulldomain");
+        mCharacterSkin = CharacterSkinPass(*mDevice);
+        mCharacterPatches = CharacterPatchPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
+                                               static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
         const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
         mLayout = gpu::PipelineLayout(*mDevice,
                                       {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
@@ -69,6 +74,18 @@ protected:
         mWirePipeline = {};
         mLayout = {};
         mFactorPass = {};
+        mCharacterSkin = {};
+        mCharacterPatches = {};
+    }
+
+    VkBufferUsageFlags compressedCageUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
+
+    void skinCharacter(const CharacterInstance& instance) override {
+        mCharacterSkin.record(*mFrame, instance, characterPush());
+    }
+
+    void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) override {
+        mCharacterPatches.record(*mFrame, instance, path, mFrameInfo.wireframe, characterPush());
     }
 
     void drawTessellated(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw) override {
@@ -120,6 +137,8 @@ protected:
 
 private:
     TessFactorPass mFactorPass;
+    CharacterSkinPass mCharacterSkin;
+    CharacterPatchPass mCharacterPatches;
     gpu::PipelineLayout mLayout;
     gpu::Pipeline mFillPipeline;
     gpu::Pipeline mWirePipeline;

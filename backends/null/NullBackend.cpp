@@ -3,10 +3,13 @@
 // it and counts what a real backend would draw, so tests of the data model
 // (scene, culling, tessellation levels, splats) run anywhere, CI included.
 #include "tessera/backend/PluginApi.h"
+#include "tessera/character/CharacterAsset.h"
+#include "tessera/tessellator/ContinuousLevel.h"
 #include "tessera/terrain/Terrain.h"
 #include "tessera/terrain/TessLevels.h"
 #include "tessera/tessellator/Tessellator.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -26,6 +29,14 @@ uint64_t quadTriangles(const std::array<float, 4>& outer, const std::array<float
     factors.inner = inner;
     return tessellator::Tessellator::countTriangles(tessellator::Domain::Quad, tessellator::Partitioning::FractionalOdd,
                                                     factors);
+}
+
+// Triangles one cage triangle becomes at a continuous level: the triangle
+// domain with fractional_odd spacing, as every GPU backend draws characters.
+uint64_t characterTriangles(float level) {
+    return tessellator::Tessellator::countTriangles(tessellator::Domain::Triangle,
+                                                    tessellator::Partitioning::FractionalOdd,
+                                                    tessellator::ContinuousLevel::factors(level));
 }
 
 class NullBackend final : public backend::Backend {
@@ -49,6 +60,7 @@ public:
 
     void shutdown() override {
         mTerrains.clear();
+        mCharacters.clear();
         mInitialized = false;
     }
 
@@ -61,6 +73,31 @@ public:
 
     void destroyTerrain(backend::TerrainHandle terrain) override {
         if (terrain.valid() && terrain.id < mTerrains.size()) mTerrains[terrain.id] = nullptr;
+    }
+
+    Result<backend::CharacterHandle> createCharacter(const backend::CharacterDesc& desc) override {
+        if (!mInitialized) return fail("null backend: createCharacter before initialize");
+        if (!desc.asset) return fail("createCharacter: no asset");
+        if (desc.asset->cage.triangleCount() == 0) return fail(desc.asset->name, ": the cage has no triangles");
+        mCharacters.push_back(desc.asset);
+        return backend::CharacterHandle{static_cast<uint32_t>(mCharacters.size() - 1)};
+    }
+
+    void destroyCharacter(backend::CharacterHandle handle) override {
+        if (handle.valid() && handle.id < mCharacters.size()) mCharacters[handle.id] = nullptr;
+    }
+
+    void drawCharacters(const backend::CharacterDrawInfo& draw) override {
+        for (const backend::CharacterDrawItem& item : draw.items) {
+            if (!item.character.valid() || item.character.id >= mCharacters.size()) continue;
+            const character::CharacterAsset* asset = mCharacters[item.character.id];
+            if (!asset || item.palette.size() < asset->cage.bindings.size()) continue;
+            const uint64_t cage = asset->cage.triangleCount();
+            ++mReport.charactersDrawn;
+            mReport.characterCageTriangles += cage;
+            mReport.trianglesSubmitted += cage * characterTriangles(std::min(item.tessLevel, kMaxTessFactor));
+        }
+        if (!draw.items.empty()) ++mReport.passes;
     }
 
     void beginFrame(const backend::FrameInfo& frame) override {
@@ -114,6 +151,7 @@ private:
     }
 
     std::vector<const terrain::Terrain*> mTerrains; ///< null once destroyed
+    std::vector<const character::CharacterAsset*> mCharacters; ///< null once destroyed
     terrain::TessView mView;
     backend::FrameReport mReport;
     backend::FrameReport mLast;

@@ -26,6 +26,7 @@
 #include "R2vbCagePass.h"
 #include "R2vbCommandPass.h"
 #include "R2vbFactorPass.h"
+#include "R2vbCharacterSkinPass.h"
 #include "R2vbTargets.h"
 #include "tessera/backend/PluginApi.h"
 
@@ -63,11 +64,13 @@ protected:
         mCagePass = R2vbCagePass(*mDevice);
         mFactorPass = R2vbFactorPass(*mDevice);
         mCommandPass = R2vbCommandPass(*mDevice);
+        mCharacterSkin = R2vbCharacterSkinPass(*mDevice);
         return {};
     }
 
     void shutdownFactorPasses() override {
         for (auto& targets : mTargets) targets = {};
+        mCharacterSkin = {};
         mCommandPass = {};
         mFactorPass = {};
         mCagePass = {};
@@ -96,7 +99,14 @@ protected:
     uint64_t factorPassBytes() const override {
         uint64_t bytes = 0;
         for (const auto& targets : mTargets) bytes += targets.bytes();
-        return bytes;
+        return bytes + mCharacterSkin.bytes();
+    }
+
+    // The compressed cage is the destination of the render target's copy.
+    VkBufferUsageFlags compressedCageUsage() const override { return VK_BUFFER_USAGE_TRANSFER_DST_BIT; }
+
+    void skinCharacter(const CharacterInstance& instance) override {
+        mCharacterSkin.record(*mFrame, instance, characterPush());
     }
 
 private:
@@ -115,6 +125,7 @@ private:
     R2vbCagePass mCagePass;
     R2vbFactorPass mFactorPass;
     R2vbCommandPass mCommandPass;
+    R2vbCharacterSkinPass mCharacterSkin;
     std::array<R2vbTargets, gpu::kFramesInFlight> mTargets;
 };
 

@@ -45,7 +45,7 @@ void R2vbCagePass::record(gpu::FrameContext& frame, R2vbTargets& targets, const 
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
     const VkDescriptorBufferInfo tess = tessUniforms.descriptor();
     const VkWriteDescriptorSet writes[1] = {
-        r2vb::bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess)};
+        bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess)};
     pushBindings(mLayout, writes);
     const VkBuffer stream = patchStream.handle();
     const VkDeviceSize offset = 0;

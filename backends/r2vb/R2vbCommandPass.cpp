@@ -69,9 +69,9 @@ uint32_t R2vbCommandPass::record(gpu::FrameContext& frame, R2vbTargets& targets,
         const VkDescriptorBufferInfo errors{patchErrors.handle(), 0, VK_WHOLE_SIZE};
         const VkDescriptorBufferInfo keys{keyTable.handle(), 0, VK_WHOLE_SIZE};
         const VkWriteDescriptorSet writes[3] = {
-            r2vb::bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess),
-            r2vb::bufferWrite(TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &errors),
-            r2vb::bufferWrite(TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &keys)};
+            bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess),
+            bufferWrite(TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &errors),
+            bufferWrite(TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &keys)};
         pushBindings(mLayout, writes);
         const VkBuffer streams[2] = {targets.factorStream().handle(), patchStream.handle()};
         const VkDeviceSize offsets[2] = {0, 0};

@@ -50,9 +50,9 @@ void R2vbFactorPass::record(gpu::FrameContext& frame, R2vbTargets& targets, cons
         const VkDescriptorImageInfo cage{mCageSampler.handle(), targets.cage().view(),
                                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
         VkWriteDescriptorSet writes[3] = {
-            r2vb::bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess),
-            r2vb::bufferWrite(TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &errors),
-            r2vb::bufferWrite(R2VB_BINDING_CAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr)};
+            bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess),
+            bufferWrite(TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &errors),
+            bufferWrite(R2VB_BINDING_CAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr)};
         writes[2].pImageInfo = &cage;
         pushBindings(mLayout, writes);
         const VkBuffer stream = patchStream.handle();

@@ -22,15 +22,6 @@ gpu::GraphicsPipelineDesc pointPipeline(const std::string& name, const gpu::Pipe
     return desc;
 }
 
-VkWriteDescriptorSet bufferWrite(uint32_t binding, VkDescriptorType type, const VkDescriptorBufferInfo* info) {
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstBinding = binding;
-    write.descriptorCount = 1;
-    write.descriptorType = type;
-    write.pBufferInfo = info;
-    return write;
-}
-
 VkImageMemoryBarrier2 imageBarrier(const gpu::Image& image, VkImageLayout from, VkImageLayout to,
                                    VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
                                    VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {

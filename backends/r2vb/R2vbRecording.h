@@ -5,6 +5,7 @@
 /// render target's first rows copied to a buffer that later passes read as
 /// a vertex stream, texel buffer or indirect buffer).
 
+#include "CommandHelpers.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/Image.h"
 #include "tessera/gpu/Pipeline.h"
@@ -27,9 +28,6 @@ using PushBindings = std::function<void(const gpu::PipelineLayout&, std::span<co
 gpu::GraphicsPipelineDesc pointPipeline(const std::string& name, const gpu::PipelineLayout& layout,
                                         std::span<const uint32_t> vertexSpirv, std::span<const uint32_t> fragmentSpirv,
                                         std::vector<VkFormat> colorFormats);
-
-/// A descriptor write of one buffer (uniform or storage) at `binding`.
-VkWriteDescriptorSet bufferWrite(uint32_t binding, VkDescriptorType type, const VkDescriptorBufferInfo* info);
 
 /// A whole-image layout transition, to batch with barriers().
 VkImageMemoryBarrier2 imageBarrier(const gpu::Image& image, VkImageLayout from, VkImageLayout to,

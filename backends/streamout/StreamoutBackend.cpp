@@ -9,6 +9,7 @@
 #include "EmulatedTerrainBackend.h"
 #include "StreamoutBuffers.h"
 #include "StreamoutCagePass.h"
+#include "StreamoutCharacterSkinPass.h"
 #include "StreamoutCullPass.h"
 #include "StreamoutFactorPass.h"
 #include "StreamoutRecording.h"
@@ -39,10 +40,12 @@ protected:
         mCagePass = StreamoutCagePass(*mDevice);
         mCullPass = StreamoutCullPass(*mDevice);
         mFactorPass = StreamoutFactorPass(*mDevice);
+        mCharacterSkin = StreamoutCharacterSkinPass(*mDevice);
         return {};
     }
 
     void shutdownFactorPasses() override {
+        mCharacterSkin = {};
         mFactorPass = {};
         mCullPass = {};
         mCagePass = {};
@@ -60,7 +63,7 @@ protected:
         // A terrain drawn earlier in this frame may still be reading these
         // buffers (its emulated draw, its passes): finish that before they
         // are cleared and streamed into again.
-        streamout::memoryBarrier(
+        memoryBarrier(
             mFrame->cmd(),
             VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT |
                 VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT |
@@ -77,11 +80,21 @@ protected:
 
     uint64_t factorPassBytes() const override { return mBuffers.bytes(); }
 
+    // The compressed cage is captured by transform feedback.
+    VkBufferUsageFlags compressedCageUsage() const override {
+        return VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT;
+    }
+
+    void skinCharacter(const CharacterInstance& instance) override {
+        mCharacterSkin.record(*mFrame, instance, characterPush());
+    }
+
 private:
     StreamoutBuffers mBuffers;
     StreamoutCagePass mCagePass;
     StreamoutCullPass mCullPass;
     StreamoutFactorPass mFactorPass;
+    StreamoutCharacterSkinPass mCharacterSkin;
 };
 
 backend::Backend* create() { return new StreamoutBackend(); }

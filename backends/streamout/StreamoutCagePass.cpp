@@ -41,7 +41,7 @@ void StreamoutCagePass::record(const StreamoutPassInputs& in) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
     const VkDescriptorBufferInfo tess = in.tessUniforms.descriptor();
     const VkWriteDescriptorSet writes[1] = {
-        streamout::bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess)};
+        bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess)};
     in.pushBindings(mLayout, writes);
     const VkBuffer cage = buffers.cage.handle();
     const VkDeviceSize offset = 0;
@@ -52,7 +52,7 @@ void StreamoutCagePass::record(const StreamoutPassInputs& in) {
     fn.cmdEndTransformFeedback(cmd, 0, 0, nullptr, nullptr);
     streamout::endStreamOut(cmd);
 
-    streamout::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
                              VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT,
                              VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT,
                              VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);

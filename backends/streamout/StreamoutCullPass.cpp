@@ -43,7 +43,7 @@ void StreamoutCullPass::record(const StreamoutPassInputs& in, std::span<const ui
     streamout::beginStreamOut(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
     const VkBufferView cage = buffers.cageView.handle();
-    const VkWriteDescriptorSet writes[1] = {streamout::texelWrite(SO_BINDING_CAGE, &cage)};
+    const VkWriteDescriptorSet writes[1] = {texelWrite(SO_BINDING_CAGE, &cage)};
     in.pushBindings(mLayout, writes);
     const VkBuffer patches = in.terrain.writeVisiblePatches(in.frame.slot(), visiblePatches).handle();
     const VkDeviceSize zero = 0;
@@ -58,7 +58,7 @@ void StreamoutCullPass::record(const StreamoutPassInputs& in, std::span<const ui
     fn.cmdEndTransformFeedback(cmd, 0, 1, &counter, &zero);
     streamout::endStreamOut(cmd);
 
-    streamout::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
                              VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT |
                                  VK_ACCESS_2_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT,
                              VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,

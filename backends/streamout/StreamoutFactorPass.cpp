@@ -77,7 +77,7 @@ void StreamoutFactorPass::record(const StreamoutPassInputs& in, const gpu::Buffe
     // Commands past the survivors must draw nothing; stream output writes
     // only the survivors' records.
     vkCmdFillBuffer(cmd, buffers.commands.handle(), 0, VK_WHOLE_SIZE, 0);
-    streamout::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                              VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
                              VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT);
 
@@ -89,11 +89,11 @@ void StreamoutFactorPass::record(const StreamoutPassInputs& in, const gpu::Buffe
     const VkDescriptorBufferInfo keys{keyTable.handle(), 0, VK_WHOLE_SIZE};
     const VkBufferView cage = buffers.cageView.handle();
     const VkWriteDescriptorSet writes[5] = {
-        streamout::bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess),
-        streamout::bufferWrite(TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &edgeErrors),
-        streamout::bufferWrite(TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &patchErrors),
-        streamout::bufferWrite(TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &keys),
-        streamout::texelWrite(SO_BINDING_CAGE, &cage)};
+        bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess),
+        bufferWrite(TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &edgeErrors),
+        bufferWrite(TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &patchErrors),
+        bufferWrite(TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &keys),
+        texelWrite(SO_BINDING_CAGE, &cage)};
     in.pushBindings(mLayout, writes);
     const VkBuffer survivors = buffers.survivors.handle();
     const VkDeviceSize zero = 0;
@@ -113,7 +113,7 @@ void StreamoutFactorPass::record(const StreamoutPassInputs& in, const gpu::Buffe
     streamout::endStreamOut(cmd);
 
     // The clear too: the commands past the survivors keep its zeros.
-    streamout::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                              VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
                              VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
                              VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);

@@ -28,6 +28,11 @@ public:
     Result<std::vector<uint16_t>> readTerrainHeights(backend::TerrainHandle) override {
         return fail("this backend keeps no GPU copy of the terrain");
     }
+    Result<backend::CharacterHandle> createCharacter(const backend::CharacterDesc&) override {
+        return backend::CharacterHandle{0};
+    }
+    void destroyCharacter(backend::CharacterHandle) override {}
+    void drawCharacters(const backend::CharacterDrawInfo&) override {}
     void endFrame() override {}
     backend::FrameReport lastFrameReport() override { return mReport; }
 

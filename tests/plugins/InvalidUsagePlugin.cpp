@@ -29,6 +29,11 @@ public:
     Result<std::vector<uint16_t>> readTerrainHeights(backend::TerrainHandle) override {
         return fail("this backend keeps no GPU copy of the terrain");
     }
+    Result<backend::CharacterHandle> createCharacter(const backend::CharacterDesc&) override {
+        return backend::CharacterHandle{0};
+    }
+    void destroyCharacter(backend::CharacterHandle) override {}
+    void drawCharacters(const backend::CharacterDrawInfo&) override {}
     void endFrame() override {
         const float clear[4] = {0, 0, 0, 1};
         mFrame->target().beginRendering(mFrame->cmd(), clear);

@@ -13,7 +13,10 @@
 // run the same formula. They may use float, vec2/vec3/vec4, uint and the
 // GLSL built-ins named in the using-declarations below; write float literals
 // with an f suffix and unsigned ones with u, which both languages accept, and
-// declare out-parameters with TS_OUT(type).
+// declare out-parameters with TS_OUT(type). Integer bit operations (<<, >>,
+// &, |) behave alike on uint; >> on int is arithmetic in both (C++20). Round
+// with floor(x + 0.5f), not round(): GLSL leaves round()'s .5 direction to
+// the implementation.
 #ifndef TESSERA_SHARED_TYPES_H
 #define TESSERA_SHARED_TYPES_H
 
@@ -25,7 +28,9 @@ using vec2 = glm::vec2;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using uvec2 = glm::uvec2;
+using uvec3 = glm::uvec3;
 using uvec4 = glm::uvec4;
+using ivec3 = glm::ivec3;
 using ivec4 = glm::ivec4;
 using mat4 = glm::mat4;
 using uint = uint32_t;
@@ -39,6 +44,13 @@ using glm::mix;
 using glm::normalize;
 using glm::sqrt;
 using glm::abs;
+// Trigonometry for the compressed vertex format. glm::atan(y, x) is
+// std::atan2(y, x), the same argument order as GLSL's two-argument atan.
+using glm::acos;
+using glm::atan;
+using glm::cos;
+using glm::cross;
+using glm::sin;
 } // namespace tessera::shader
 #define TS_INLINE inline
 #define TS_OUT(type) type&

@@ -1,5 +1,6 @@
 // String forms of the contract's enums, shared by the CLI, reports and logs.
 #include "tessera/backend/BackendCapabilities.h"
+#include "tessera/backend/CharacterDesc.h"
 
 namespace tessera::backend {
 
@@ -8,6 +9,14 @@ const char* toString(TessellationPath path) {
     case TessellationPath::None: return "none";
     case TessellationPath::Emulated: return "emulated";
     case TessellationPath::Hardware: return "hardware";
+    }
+    return "?";
+}
+
+const char* toString(CharacterPath path) {
+    switch (path) {
+    case CharacterPath::TwoPass: return "two-pass";
+    case CharacterPath::SinglePass: return "single-pass";
     }
     return "?";
 }

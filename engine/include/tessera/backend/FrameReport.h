@@ -11,6 +11,10 @@ struct FrameReport {
     uint64_t frameIndex = 0;
     uint32_t terrainPatchesDrawn = 0;
     uint32_t splatsApplied = 0;
+    /// Character instances drawn and their control-cage triangles (the
+    /// superprimitives before tessellation).
+    uint32_t charactersDrawn = 0;
+    uint64_t characterCageTriangles = 0;
     /// Triangles the backend submitted (before clipping), as it computes them.
     uint64_t trianglesSubmitted = 0;
     uint32_t passes = 0;

@@ -4,7 +4,7 @@
 ///
 /// As in Filament (`Handle<HwTexture>`), a resource created by a backend is
 /// named by a small typed integer; the tag type makes a TerrainHandle and a
-/// future CharacterHandle impossible to mix up.
+/// CharacterHandle impossible to mix up.
 
 #include <cstdint>
 
@@ -22,5 +22,9 @@ struct Handle {
 struct TerrainTag;
 /// A terrain uploaded with Backend::createTerrain.
 using TerrainHandle = Handle<TerrainTag>;
+
+struct CharacterTag;
+/// A character uploaded with Backend::createCharacter.
+using CharacterHandle = Handle<CharacterTag>;
 
 } // namespace tessera::backend

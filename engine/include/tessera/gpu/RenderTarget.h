@@ -35,9 +35,16 @@ public:
     /// Transitions both images from UNDEFINED and begins dynamic rendering
     /// into them, clearing to `clear` (color) and 1.0 (depth).
     void beginRendering(VkCommandBuffer cmd, const float clear[4]);
+    /// Reopens rendering after an endRendering in the same frame, keeping what
+    /// was drawn (load, not clear), after a barrier on the earlier writes.
+    /// Lets a backend run off-target passes (compute, stream-out, R2VB) between
+    /// draws into the frame.
+    void resumeRendering(VkCommandBuffer cmd);
     void endRendering(VkCommandBuffer cmd);
 
 private:
+    void begin(VkCommandBuffer cmd, const float clear[4], VkAttachmentLoadOp load);
+
     Image mColor;
     Image mDepth;
 };

@@ -1,0 +1,131 @@
+#include "BasicCharacterBackend.h"
+
+#include "FrameUniforms.h"
+#include "tessera/character/CharacterAsset.h"
+#include "tessera/gpu/FrameContext.h"
+#include "tessera/tessellator/Tessellator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace tessera::backends {
+
+Result<backend::CharacterHandle> BasicCharacterBackend::createCharacter(const backend::CharacterDesc& desc) {
+    auto created = GpuCharacter::create(*mDevice, desc, compressedCageUsage());
+    if (!created) return created.error();
+    mCharacters.push_back(std::move(created.value()));
+    return backend::CharacterHandle{static_cast<uint32_t>(mCharacters.size() - 1)};
+}
+
+GpuCharacter* BasicCharacterBackend::findCharacter(backend::CharacterHandle handle) {
+    if (!handle.valid() || handle.id >= mCharacters.size()) return nullptr;
+    return mCharacters[handle.id].get();
+}
+
+void BasicCharacterBackend::destroyCharacter(backend::CharacterHandle handle) {
+    if (!findCharacter(handle)) return;
+    // A frame in flight may still read it; release after that frame.
+    auto* released = mCharacters[handle.id].release();
+    mDevice->deferDestroy([released] { delete released; });
+}
+
+void BasicCharacterBackend::shutdown() {
+    if (mDevice) mDevice->waitIdle();
+    mCharacters.clear();
+    BasicTerrainBackend::shutdown();
+}
+
+void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& draw) {
+    const float maxLevel = capabilities(nullptr).maxTessFactor;
+    std::vector<CharacterInstance> instances;
+    instances.reserve(draw.items.size());
+    // Instances of one character in this frame each need their own compressed cage.
+    std::vector<uint32_t> seen(mCharacters.size(), 0);
+    for (const backend::CharacterDrawItem& item : draw.items) {
+        GpuCharacter* character = findCharacter(item.character);
+        if (!character || item.palette.size() < character->paletteSize()) continue;
+        CharacterInstance instance;
+        instance.character = character;
+        instance.level = std::clamp(std::isnan(item.tessLevel) ? 1.0f : item.tessLevel, 1.0f, maxLevel);
+        instance.uniforms = mFrame->pushUniform(character->uniforms(item.world, instance.level, draw.displacement));
+        // Only the used joints are bound: the shaders index the palette by the
+        // cage's joints, all below paletteSize (GpuCharacter checks them), and
+        // a 16 KiB block per instance would fill the frame's uniform ring.
+        instance.palette = mFrame->allocateUniform(character->paletteSize() * sizeof(glm::mat4));
+        std::memcpy(instance.palette.data, item.palette.data(), character->paletteSize() * sizeof(glm::mat4));
+        if (draw.path == backend::CharacterPath::TwoPass)
+            instance.compressed = &character->compressed(mFrame->slot(), seen[item.character.id]++);
+        instances.push_back(instance);
+    }
+    if (instances.empty()) return;
+
+    if (draw.path == backend::CharacterPath::TwoPass) {
+        suspendMainPass();
+        gpu::PassScope pass(*mFrame, "character.skin");
+        for (const CharacterInstance& instance : instances) skinCharacter(instance);
+        ++mReport.passes;
+    }
+    ensureMainPass();
+    gpu::PassScope pass(*mFrame, draw.path == backend::CharacterPath::TwoPass ? "character.tessellate"
+                                                                               : "character.singlePass");
+    for (const CharacterInstance& instance : instances) {
+        drawCharacter(instance, draw.path);
+        ++mReport.charactersDrawn;
+        mReport.characterCageTriangles += instance.character->triangleCount();
+        // Every backend tessellates the cage triangle with fractional-odd
+        // spacing at the draw's level: the emulated tessellator counts it.
+        tessellator::TessFactors factors;
+        factors.outer = {instance.level, instance.level, instance.level, instance.level};
+        factors.inner = {instance.level, instance.level};
+        mReport.trianglesSubmitted +=
+            uint64_t(instance.character->triangleCount()) *
+            tessellator::Tessellator::countTriangles(tessellator::Domain::Triangle,
+                                                     tessellator::Partitioning::FractionalOdd, factors);
+    }
+    ++mReport.passes;
+}
+
+CharacterPushFn BasicCharacterBackend::characterPush() {
+    return [this](VkPipelineBindPoint point, const gpu::PipelineLayout& layout, const CharacterInstance& instance,
+                  std::span<const VkWriteDescriptorSet> extra) { pushCharacterDescriptors(point, layout, instance, extra); };
+}
+
+void BasicCharacterBackend::pushCharacterDescriptors(VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout,
+                                                     const CharacterInstance& instance,
+                                                     std::span<const VkWriteDescriptorSet> extra) {
+    GpuCharacter& c = *instance.character;
+    const VkDescriptorBufferInfo buffers[3] = {mFrameUniforms.descriptor(), instance.uniforms.descriptor(),
+                                               instance.palette.descriptor()};
+    const uint32_t bufferBindings[3] = {TS_BINDING_FRAME, TS_BINDING_CHARACTER, TS_BINDING_CHARACTER_PALETTE};
+    const VkDescriptorImageInfo images[3] = {
+        {c.sampler().handle(), c.baseColor().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+        {c.sampler().handle(), c.normalMap().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+        {c.sampler().handle(), c.displacementMap().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
+    const uint32_t imageBindings[3] = {TS_BINDING_BASE_COLOR, TS_BINDING_NORMAL_MAP, TS_BINDING_DISPLACEMENT};
+    std::vector<VkWriteDescriptorSet> writes;
+    writes.reserve(6 + extra.size());
+    for (int i = 0; i < 3; ++i) {
+        VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        w.dstBinding = bufferBindings[i];
+        w.descriptorCount = 1;
+        w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+        w.pBufferInfo = &buffers[i];
+        writes.push_back(w);
+    }
+    if (bindPoint == VK_PIPELINE_BIND_POINT_GRAPHICS) {
+        for (int i = 0; i < 3; ++i) {
+            VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+            w.dstBinding = imageBindings[i];
+            w.descriptorCount = 1;
+            w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+            w.pImageInfo = &images[i];
+            writes.push_back(w);
+        }
+    }
+    writes.insert(writes.end(), extra.begin(), extra.end());
+    mDevice->fn().cmdPushDescriptorSet(mFrame->cmd(), bindPoint, layout.handle(), 0,
+                                       static_cast<uint32_t>(writes.size()), writes.data());
+}
+
+} // namespace tessera::backends

@@ -1,0 +1,68 @@
+#pragma once
+/// @file BasicCharacterBackend.h
+/// What the three GPU backends share for characters: upload (GpuCharacter),
+/// per-instance uniforms and skinning palettes, the order of the two passes
+/// and the descriptors every character draw binds. Each backend supplies its
+/// own technique for the two halves the paper's eras differ in:
+///  - skinCharacter: pass 1 of the two-pass path, animating every cage vertex
+///    once into the 128-bit compressed format with its era's recirculation
+///    (compute, transform feedback, or a render target re-read as a stream);
+///  - drawCharacter: the tessellated draw (hardware tessellation stages, or
+///    the emulated tessellator's pattern through an evaluation vertex shader).
+
+#include "BasicTerrainBackend.h"
+#include "GpuCharacter.h"
+
+#include <functional>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace tessera::backends {
+
+/// What one drawn instance binds, for both passes.
+struct CharacterInstance {
+    GpuCharacter* character = nullptr;
+    gpu::UniformSlice uniforms;  ///< shader::CharacterUniforms
+    gpu::UniformSlice palette;   ///< shader::CharacterPalette
+    CompressedCage* compressed = nullptr;  ///< pass 1's output (two-pass only)
+    float level = 1.0f;          ///< clamped to the backend's maximum
+};
+
+/// How a backend's character pass objects push their descriptors through the
+/// backend, so the pass classes stay separate from the backend class.
+using CharacterPushFn = std::function<void(VkPipelineBindPoint, const gpu::PipelineLayout&, const CharacterInstance&,
+                                           std::span<const VkWriteDescriptorSet>)>;
+
+class BasicCharacterBackend : public BasicTerrainBackend {
+public:
+    Result<backend::CharacterHandle> createCharacter(const backend::CharacterDesc& desc) override;
+    void destroyCharacter(backend::CharacterHandle character) override;
+    void drawCharacters(const backend::CharacterDrawInfo& draw) override;
+    void shutdown() override;
+
+protected:
+    /// Buffer usage pass 1 writes compressed cages with (storage for compute,
+    /// transform feedback, transfer destination for a render-target copy).
+    virtual VkBufferUsageFlags compressedCageUsage() const = 0;
+    /// Pass 1, outside the main pass: writes `instance.compressed` and leaves
+    /// it visible to vertex-shader reads.
+    virtual void skinCharacter(const CharacterInstance& instance) = 0;
+    /// Pass 2, inside the main pass.
+    virtual void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) = 0;
+
+    /// Pushes the bindings every character draw shares (frame, character,
+    /// palette, maps) plus `extra` (the cage and compressed cage as the
+    /// technique reads them).
+    void pushCharacterDescriptors(VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout,
+                                  const CharacterInstance& instance, std::span<const VkWriteDescriptorSet> extra);
+    /// pushCharacterDescriptors as a callable for the pass objects.
+    CharacterPushFn characterPush();
+
+private:
+    GpuCharacter* findCharacter(backend::CharacterHandle handle);
+
+    std::vector<std::unique_ptr<GpuCharacter>> mCharacters;
+};
+
+} // namespace tessera::backends

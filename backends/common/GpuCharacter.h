@@ -1,0 +1,97 @@
+#pragma once
+/// @file GpuCharacter.h
+/// A character's GPU resources shared by the backends: the bind-pose cage
+/// (CharacterVertex, shader::CharacterUniforms' layout), its triangle list,
+/// its maps, and the animated, compressed cage each drawn instance gets per
+/// frame (the paper's 128-bit vertices, CompressedVertex.h).
+
+#include "CharacterUniforms.h"
+#include "tessera/backend/CharacterDesc.h"
+#include "tessera/core/Result.h"
+#include "tessera/gpu/Buffer.h"
+#include "tessera/gpu/BufferView.h"
+#include "tessera/gpu/Device.h"
+#include "tessera/gpu/Image.h"
+#include "tessera/gpu/Sampler.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tessera::backends {
+
+/// One instance's animated cage: a uvec4 per cage vertex, plus an RGBA32UI
+/// texel view of it for the evaluation vertex shaders of the emulated backends.
+struct CompressedCage {
+    gpu::Buffer buffer;
+    gpu::BufferView view;
+};
+
+class GpuCharacter {
+public:
+    /// Extra usage the backend's pass 1 needs on the compressed buffers
+    /// (storage for compute, transform feedback, transfer destination for R2VB).
+    static Result<std::unique_ptr<GpuCharacter>> create(gpu::Device& device, const backend::CharacterDesc& desc,
+                                                        VkBufferUsageFlags compressedUsage);
+
+    const std::string& name() const { return mName; }
+    uint32_t vertexCount() const { return mVertexCount; }
+    uint32_t triangleCount() const { return mTriangleCount; }
+    uint32_t paletteSize() const { return mPaletteSize; }
+
+    /// Bind-pose cage: vertex stream (stride 80), storage buffer, and an
+    /// RGBA32UI texel view (TS_CHARACTER_VERTEX_TEXELS texels per vertex).
+    gpu::Buffer& vertices() { return mVertices; }
+    VkBufferView vertexTexels() const { return mVertexTexels.handle(); }
+    /// Three uint32 per triangle: the index buffer, and the per-instance
+    /// stream of superprimitive vertex indices for the emulated draws.
+    gpu::Buffer& indices() { return mIndices; }
+
+    /// The animated cage for the `instance`-th draw of this character in the
+    /// frame slot `slot` (made on first use, kept for later frames).
+    CompressedCage& compressed(uint32_t slot, uint32_t instance);
+
+    /// Uniforms for one instance (world matrix and tessellation level filled
+    /// by the caller).
+    shader::CharacterUniforms uniforms(const glm::mat4& world, float level, bool displacement) const;
+
+    gpu::Image& baseColor() { return mBaseColor; }
+    gpu::Image& normalMap() { return mNormalMap; }
+    gpu::Image& displacementMap() { return mDisplacement; }
+    gpu::Sampler& sampler() { return mSampler; }
+    bool hasDisplacement() const { return mHasDisplacement; }
+
+    /// Bytes of the cage, index and map resources (not the per-frame caches).
+    uint64_t staticBytes() const { return mStaticBytes; }
+
+private:
+    GpuCharacter() = default;
+
+    gpu::Device* mDevice = nullptr;
+    std::string mName;
+    uint32_t mVertexCount = 0;
+    uint32_t mTriangleCount = 0;
+    uint32_t mPaletteSize = 0;
+    bool mHasDisplacement = false;
+    bool mNegativeHandedness = false;
+    float mDisplacementScale = 0.0f;
+    float mDisplacementBias = 0.0f;
+    glm::vec3 mBoxMin{0.0f};
+    glm::vec3 mBoxMax{1.0f};
+    glm::vec4 mUvRange{0.0f, 0.0f, 1.0f, 1.0f};
+    VkBufferUsageFlags mCompressedUsage = 0;
+    uint64_t mStaticBytes = 0;
+
+    gpu::Buffer mVertices;
+    gpu::BufferView mVertexTexels;
+    gpu::Buffer mIndices;
+    gpu::Image mBaseColor;
+    gpu::Image mNormalMap;
+    gpu::Image mDisplacement;
+    gpu::Sampler mSampler;
+    std::array<std::vector<std::unique_ptr<CompressedCage>>, gpu::kFramesInFlight> mCompressed;
+};
+
+} // namespace tessera::backends

@@ -1,0 +1,75 @@
+#include "CharacterPatchPass.h"
+
+#include "CommandHelpers.h"
+#include "FrameUniforms.h"
+#include "tessera/gpu/FrameContext.h"
+
+#include "character.frag.spv.h"
+#include "character_patch.tesc.spv.h"
+#include "character_patch.tesc_single.spv.h"
+#include "character_patch.tese.spv.h"
+#include "character_patch.tese_single.spv.h"
+#include "character_patch.vert.spv.h"
+#include "character_patch.vert_single.spv.h"
+
+namespace tessera::backends {
+
+CharacterPatchPass::CharacterPatchPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat,
+                                       bool wireframe) {
+    const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
+    mLayout = gpu::PipelineLayout(device,
+                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
+                                   {TS_BINDING_CHARACTER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
+                                   {TS_BINDING_CHARACTER_PALETTE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
+                                   {TS_BINDING_CAGE_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, graphics},
+                                   {TS_BINDING_COMPRESSED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, graphics},
+                                   {TS_BINDING_BASE_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics},
+                                   {TS_BINDING_NORMAL_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics},
+                                   {TS_BINDING_DISPLACEMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics}},
+                                  0, 0, "hulldomain.characterPatches.layout");
+    for (int single = 0; single < 2; ++single) {
+        gpu::GraphicsPipelineDesc desc;
+        desc.layout = &mLayout;
+        using Spirv = std::span<const uint32_t>;
+        desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT,
+                        single ? Spirv(character_patch_vert_single_spv) : Spirv(character_patch_vert_spv)},
+                       {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT,
+                        single ? Spirv(character_patch_tesc_single_spv) : Spirv(character_patch_tesc_spv)},
+                       {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT,
+                        single ? Spirv(character_patch_tese_single_spv) : Spirv(character_patch_tese_spv)},
+                       {VK_SHADER_STAGE_FRAGMENT_BIT, character_frag_spv}};
+        // No vertex streams: the vertex stage reads by gl_VertexIndex.
+        desc.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
+        desc.patchControlPoints = 3;
+        desc.colorFormats = {colorFormat};
+        desc.depthFormat = depthFormat;
+        const std::string base = std::string("hulldomain.character.") + (single ? "singlePass" : "twoPass");
+        desc.name = base + ".fill";
+        mPipelines[single][0] = gpu::Pipeline(device, desc);
+        if (wireframe) {
+            desc.name = base + ".wireframe";
+            desc.polygonMode = VK_POLYGON_MODE_LINE;
+            mPipelines[single][1] = gpu::Pipeline(device, desc);
+        }
+    }
+}
+
+void CharacterPatchPass::record(gpu::FrameContext& frame, const CharacterInstance& instance,
+                                backend::CharacterPath path, bool wireframe, const CharacterPushFn& push) {
+    VkCommandBuffer cmd = frame.cmd();
+    GpuCharacter& c = *instance.character;
+    const int single = path == backend::CharacterPath::SinglePass ? 1 : 0;
+    const gpu::Pipeline& pipeline = mPipelines[single][wireframe && mPipelines[single][1].valid() ? 1 : 0];
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.handle());
+    const VkDescriptorBufferInfo cage{c.vertices().handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorBufferInfo compressed{c.vertices().handle(), 0, VK_WHOLE_SIZE};
+    if (instance.compressed) compressed = {instance.compressed->buffer.handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[2] = {
+        bufferWrite(TS_BINDING_CAGE_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &cage),
+        bufferWrite(TS_BINDING_COMPRESSED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &compressed)};
+    push(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, instance, writes);
+    vkCmdBindIndexBuffer(cmd, c.indices().handle(), 0, VK_INDEX_TYPE_UINT32);
+    vkCmdDrawIndexed(cmd, c.triangleCount() * 3, 1, 0, 0, 0);
+}
+
+} // namespace tessera::backends

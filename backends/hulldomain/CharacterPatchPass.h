@@ -1,0 +1,30 @@
+#pragma once
+/// @file CharacterPatchPass.h
+/// hulldomain's tessellated character draw (D3D11 style): the cage triangles
+/// as 3-point patches, a pass-through hull stage with the draw's continuous
+/// level (up to 64), and the paper's Listing 8 evaluation in the domain stage.
+/// Two-pass: control points are the compressed vertices pass 1 wrote;
+/// single-pass: the domain stage skins all three corners at every point.
+
+#include "BasicCharacterBackend.h"
+#include "tessera/gpu/Pipeline.h"
+#include "tessera/gpu/PipelineLayout.h"
+
+namespace tessera::backends {
+
+class CharacterPatchPass {
+public:
+    CharacterPatchPass() = default;
+    CharacterPatchPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat, bool wireframe);
+
+    /// Draws one instance inside the main pass.
+    void record(gpu::FrameContext& frame, const CharacterInstance& instance, backend::CharacterPath path,
+                bool wireframe, const CharacterPushFn& push);
+
+private:
+    gpu::PipelineLayout mLayout;
+    // [path][wireframe]
+    gpu::Pipeline mPipelines[2][2];
+};
+
+} // namespace tessera::backends

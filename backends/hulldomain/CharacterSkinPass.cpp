@@ -1,0 +1,38 @@
+#include "CharacterSkinPass.h"
+
+#include "CommandHelpers.h"
+#include "FrameUniforms.h"
+#include "tessera/gpu/FrameContext.h"
+
+#include "character_skin.comp.spv.h"
+
+namespace tessera::backends {
+
+CharacterSkinPass::CharacterSkinPass(gpu::Device& device) {
+    const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+    mLayout = gpu::PipelineLayout(device,
+                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
+                                   {TS_BINDING_CHARACTER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
+                                   {TS_BINDING_CHARACTER_PALETTE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
+                                   {TS_BINDING_CAGE_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
+                                   {TS_BINDING_COMPRESSED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute}},
+                                  0, 0, "hulldomain.characterSkin.layout");
+    mPipeline = gpu::ComputePipeline(device, mLayout, character_skin_comp_spv, "hulldomain.characterSkin");
+}
+
+void CharacterSkinPass::record(gpu::FrameContext& frame, const CharacterInstance& instance,
+                               const CharacterPushFn& push) {
+    VkCommandBuffer cmd = frame.cmd();
+    GpuCharacter& c = *instance.character;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mPipeline.handle());
+    const VkDescriptorBufferInfo cage{c.vertices().handle(), 0, VK_WHOLE_SIZE};
+    const VkDescriptorBufferInfo out{instance.compressed->buffer.handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[2] = {bufferWrite(TS_BINDING_CAGE_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &cage),
+                                            bufferWrite(TS_BINDING_COMPRESSED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &out)};
+    push(VK_PIPELINE_BIND_POINT_COMPUTE, mLayout, instance, writes);
+    vkCmdDispatch(cmd, (c.vertexCount() + 63) / 64, 1, 1);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+}
+
+} // namespace tessera::backends

@@ -1,0 +1,27 @@
+#pragma once
+/// @file CharacterSkinPass.h
+/// hulldomain's pass 1 of the two-pass character path (D3D11 style): a
+/// compute shader skins every cage vertex once and writes the 128-bit
+/// compressed vertex to a storage buffer.
+
+#include "BasicCharacterBackend.h"
+#include "tessera/gpu/ComputePipeline.h"
+#include "tessera/gpu/PipelineLayout.h"
+
+namespace tessera::backends {
+
+class CharacterSkinPass {
+public:
+    CharacterSkinPass() = default;
+    explicit CharacterSkinPass(gpu::Device& device);
+
+    /// Dispatches one invocation per cage vertex into `instance.compressed`,
+    /// then makes the writes visible to vertex-shader reads.
+    void record(gpu::FrameContext& frame, const CharacterInstance& instance, const CharacterPushFn& push);
+
+private:
+    gpu::PipelineLayout mLayout;
+    gpu::ComputePipeline mPipeline;
+};
+
+} // namespace tessera::backends

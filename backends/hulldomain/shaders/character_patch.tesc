@@ -1,0 +1,40 @@
+#version 450
+// hulldomain hull stage for characters: the superprimitive is the cage
+// triangle, passed through; continuous tessellation sets one level for the
+// whole draw (the paper's per-draw level), up to 64.
+#extension GL_GOOGLE_include_directive : require
+#include "character_common.glsl"
+
+layout(vertices = 3) out;
+
+#ifdef TS_SINGLE_PASS
+layout(location = 0) in uint inIndex[];
+layout(location = 0) out uint outIndex[];
+#else
+layout(location = 0) in vec3 inPosition[];
+layout(location = 1) in vec3 inNormal[];
+layout(location = 2) in vec3 inTangent[];
+layout(location = 3) in vec2 inUv[];
+layout(location = 0) out vec3 outPosition[];
+layout(location = 1) out vec3 outNormal[];
+layout(location = 2) out vec3 outTangent[];
+layout(location = 3) out vec2 outUv[];
+#endif
+
+void main() {
+#ifdef TS_SINGLE_PASS
+    outIndex[gl_InvocationID] = inIndex[gl_InvocationID];
+#else
+    outPosition[gl_InvocationID] = inPosition[gl_InvocationID];
+    outNormal[gl_InvocationID] = inNormal[gl_InvocationID];
+    outTangent[gl_InvocationID] = inTangent[gl_InvocationID];
+    outUv[gl_InvocationID] = inUv[gl_InvocationID];
+#endif
+    if (gl_InvocationID == 0) {
+        float level = uCharacter.displacement.z;
+        gl_TessLevelOuter[0] = level;
+        gl_TessLevelOuter[1] = level;
+        gl_TessLevelOuter[2] = level;
+        gl_TessLevelInner[0] = level;
+    }
+}

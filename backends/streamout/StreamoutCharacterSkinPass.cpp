@@ -1,0 +1,59 @@
+#include "StreamoutCharacterSkinPass.h"
+
+#include "FrameUniforms.h"
+#include "StreamoutRecording.h"
+#include "tessera/gpu/Device.h"
+#include "tessera/gpu/FrameContext.h"
+
+#include "streamout_character_skin.vert.spv.h"
+
+namespace tessera::backends {
+
+StreamoutCharacterSkinPass::StreamoutCharacterSkinPass(gpu::Device& device) {
+    const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
+    mLayout = gpu::PipelineLayout(device,
+                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
+                                   {TS_BINDING_CHARACTER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
+                                   {TS_BINDING_CHARACTER_PALETTE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex}},
+                                  0, 0, "streamout.characterSkin.layout");
+    gpu::GraphicsPipelineDesc desc;
+    desc.name = "streamout.characterSkin";
+    desc.layout = &mLayout;
+    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, streamout_character_skin_vert_spv}};
+    desc.vertexBindings = {{0, sizeof(shader::CharacterVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, positionU)},
+                             {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, normalV)},
+                             {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, tangent)},
+                             {3, 0, VK_FORMAT_R32G32B32A32_UINT, offsetof(shader::CharacterVertex, joints)},
+                             {4, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, weights)}};
+    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+    desc.cullMode = VK_CULL_MODE_NONE;
+    desc.depthTest = false;
+    desc.depthWrite = false;
+    desc.rasterizerDiscard = true;
+    mPipeline = gpu::Pipeline(device, desc);
+}
+
+void StreamoutCharacterSkinPass::record(gpu::FrameContext& frame, const CharacterInstance& instance,
+                                        const CharacterPushFn& push) {
+    VkCommandBuffer cmd = frame.cmd();
+    const auto& fn = frame.device().fn();
+    GpuCharacter& c = *instance.character;
+    streamout::beginStreamOut(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
+    push(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, instance, {});
+    const VkBuffer stream = c.vertices().handle();
+    const VkDeviceSize zero = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &stream, &zero);
+    const VkBuffer out = instance.compressed->buffer.handle();
+    const VkDeviceSize size = VkDeviceSize(c.vertexCount()) * 16;
+    fn.cmdBindTransformFeedbackBuffers(cmd, 0, 1, &out, &zero, &size);
+    fn.cmdBeginTransformFeedback(cmd, 0, 0, nullptr, nullptr);
+    vkCmdDraw(cmd, c.vertexCount(), 1, 0, 0);
+    fn.cmdEndTransformFeedback(cmd, 0, 0, nullptr, nullptr);
+    streamout::endStreamOut(cmd);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT, VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT,
+                  VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+}
+
+} // namespace tessera::backends

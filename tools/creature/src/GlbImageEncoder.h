@@ -1,0 +1,20 @@
+#pragma once
+/// @file GlbImageEncoder.h
+/// PNG encoding of character maps for embedding in .glb files.
+
+#include "tessera/character/TextureImage.h"
+#include "tessera/core/Result.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace tessera::creature {
+
+/// Encodes `image` as PNG bytes: Rgba8 as 8-bit RGBA, R16 as 16-bit
+/// grayscale (the displacement map keeps its full precision). No time or
+/// text chunks and fixed zlib settings, so the bytes depend on the texels
+/// only. Fails (naming `what`) on an empty image or a byte count that does
+/// not match the size.
+Result<std::vector<uint8_t>> encodePng(const character::TextureImage& image, const char* what);
+
+} // namespace tessera::creature
