@@ -39,6 +39,16 @@ Status runFlythrough(const DemoOptions& options) {
                    ? std::string(", metric ") + terrain::toString(settings.value().metric)
                    : std::string()));
 
+    session.setTerrainVisible(options.terrain);
+    CharacterCrowd* crowd = scene.crowd();
+    if (crowd) {
+        if (options.characterLevel && *options.characterLevel > session.maxCharacterLevel())
+            return fail("--character-level ", std::to_string(*options.characterLevel), ": backend ",
+                        session.capabilities().name, " tessellates up to level ",
+                        std::to_string(session.maxCharacterLevel()));
+        if (Status ok = session.createCharacters(*crowd); !ok) return ok.error();
+    }
+
     scene::Camera camera;
     uint32_t rendered = 0;
     for (uint32_t frame = 0; frame < frames; ++frame, ++rendered) {
@@ -50,9 +60,15 @@ Status runFlythrough(const DemoOptions& options) {
             camera.setPose(scene.cameraPose(frame));
             camera.setAspect(float(session.width()) / float(session.height()));
         }
+        backend::CharacterDrawInfo characters;
+        if (crowd) {
+            crowd->update(frame * DemoScene::kSecondsPerFrame, camera, session.height(), session.maxCharacterLevel(),
+                          options.characterLevel);
+            characters = {crowd->items(), options.characterPath, options.displacement};
+        }
         const bool last = frame + 1 == frames;
         session.renderFrame(frame, camera, settings.value(), options.clearColor, options.wireframe,
-                            last && !options.screenshot.empty());
+                            last && !options.screenshot.empty(), crowd ? &characters : nullptr);
         profiler.endFrame();
     }
     const std::vector<uint8_t> pixels = session.finish();

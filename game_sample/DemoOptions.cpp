@@ -89,6 +89,25 @@ Backend and device:
                         every message, fail at exit if there were any
 
 Scene:
+  --scene NAME          terrain (the flythrough) | characters (a crowd of
+                        tessellated, displaced, animated creatures and
+                        CesiumMan walking on the terrain; the default when
+                        --model is given)
+  --model FILE          place a .gltf or .glb file in the characters scene,
+                        playing its first animation (repeatable)
+  --crowd N             generated creatures in the characters scene, with
+                        CesiumMan (default 6; 0: only the --model files,
+                        centred where the crowd would stand)
+  --orbit-distance M    radius of the camera's circle around the characters
+                        (default 5 metres)
+  --no-displacement     draw characters without their displacement maps
+  --no-terrain          draw the characters alone on the clear colour
+  --character-path P    two-pass (skin the cage once into 128-bit vertices,
+                        then tessellate; default) | single-pass (skin every
+                        tessellated vertex)
+  --character-level L   characters' tessellation level, 1 to the backend's
+                        maximum (default: from each character's size on
+                        screen)
   --heightmap FILE      8- or 16-bit grayscale PNG height map (default: the
                         generated content/terrain/height.png)
   --content DIR         content directory
@@ -176,6 +195,29 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         else if (flag == "--validation") o.validation = true;
         else if (flag == "--window") o.window = true;
         else if (flag == "--wireframe") o.wireframe = true;
+        else if (flag == "--no-displacement") o.displacement = false;
+        else if (flag == "--no-terrain") o.terrain = false;
+        else if (flag == "--model") { TESSERA_TAKE(v); o.models.push_back(v); }
+        else if (flag == "--scene") {
+            TESSERA_TAKE(v);
+            if (v != "terrain" && v != "characters")
+                return fail("--scene expects terrain or characters, got \"", v, "\"");
+            o.scene = v;
+            o.sceneGiven = true;
+        } else if (flag == "--character-path") {
+            TESSERA_TAKE(v);
+            if (v == "two-pass") o.characterPath = backend::CharacterPath::TwoPass;
+            else if (v == "single-pass") o.characterPath = backend::CharacterPath::SinglePass;
+            else return fail("--character-path expects two-pass or single-pass, got \"", v, "\"");
+        }
+        else if (flag == "--character-level") {
+            TESSERA_TAKE(text);
+            auto n = parseNumber(flag, text, 1.0f, 64.0f);
+            if (!n) return n.error();
+            o.characterLevel = n.value();
+        }
+        else if (flag == "--crowd") TESSERA_TAKE_COUNT(crowd, 0, 256)
+        else if (flag == "--orbit-distance") TESSERA_TAKE_NUMBER(orbitDistance, 0.25f, 10000.0f)
         else if (flag == "--backend") { TESSERA_TAKE(v); o.backend = v; }
         else if (flag == "--device") { TESSERA_TAKE(v); o.device = v; }
         else if (flag == "--plugin-dir") { TESSERA_TAKE(v); o.pluginDirs.push_back(v); }
@@ -247,6 +289,11 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
     }
     if (o.backend == "all" && o.bench.empty())
         return fail("--backend all compares the backends in --bench terrain; pick one backend for the demo");
+    if (!o.models.empty() && !o.sceneGiven) o.scene = "characters";
+    if (!o.models.empty() && o.scene != "characters")
+        return fail("--model places models in the characters scene; drop --scene terrain");
+    if (!o.bench.empty() && o.bench == "terrain" && o.scene == "characters")
+        return fail("--bench terrain measures the terrain; drop --scene characters");
     if (!o.tessTargetGiven) o.tessellation.targetPixels = terrain::defaultTargetPixels(o.tessellation.metric);
     if (o.window && !o.screenshot.empty() && o.frames == 0)
         return fail("--screenshot with --window needs --frames N to know which frame to capture");

@@ -3,6 +3,7 @@
 /// The demo's command line. Every flag is documented in helpText(); parsing
 /// never exits, it returns an error naming the bad flag.
 
+#include "tessera/backend/CharacterDesc.h"
 #include "tessera/core/Result.h"
 #include "tessera/scene/CameraPose.h"
 #include "tessera/terrain/CraterSplat.h"
@@ -52,6 +53,19 @@ struct DemoOptions {
     bool tessMetricGiven = false;
     uint32_t meteors = 0;                         ///< --meteors N
     std::vector<terrain::CraterSplat> splats;     ///< --splat x,z,radius[,depth], before the first frame
+
+    /// --scene terrain|characters. "characters" (the default when --model is
+    /// given) walks a crowd of generated creatures, CesiumMan and every
+    /// --model on the terrain, with the camera circling them.
+    std::string scene = "terrain";
+    bool sceneGiven = false;
+    std::vector<std::string> models;    ///< --model FILE (repeatable): any .gltf or .glb
+    uint32_t crowd = 6;                 ///< --crowd N: generated creatures (0: only the --model files, no CesiumMan)
+    float orbitDistance = 5.0f;         ///< --orbit-distance M: the characters scene's camera circle
+    bool displacement = true;           ///< --no-displacement draws the bare interpolated cage
+    bool terrain = true;                ///< --no-terrain: characters alone on the clear colour (crack tests, captures)
+    backend::CharacterPath characterPath = backend::CharacterPath::TwoPass; ///< --character-path
+    std::optional<float> characterLevel; ///< --character-level L; unset: from each character's size on screen
 
     /// --bench terrain: the Table 2 benchmark instead of the flythrough.
     std::string bench;

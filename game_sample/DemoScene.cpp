@@ -41,6 +41,11 @@ Result<std::unique_ptr<DemoScene>> DemoScene::load(const DemoOptions& options, u
     pathSettings.clearance = kCameraClearance;
     scene->mPath.emplace(pathSettings, [&ground](float x, float z) { return ground.heightAt(x, z); });
     scene->mFixedPose = options.camera;
+    if (options.scene == "characters") {
+        auto crowd = CharacterCrowd::load(options, ground);
+        if (!crowd) return crowd.error();
+        scene->mCrowd = std::move(crowd.value());
+    }
 
     if (options.meteors > 0) {
         // Spread over the run (its last frame included), or over the first
@@ -66,6 +71,7 @@ Result<std::unique_ptr<DemoScene>> DemoScene::load(const DemoOptions& options, u
 
 scene::CameraPose DemoScene::cameraPose(uint32_t frame) const {
     if (mFixedPose) return *mFixedPose;
+    if (mCrowd) return mCrowd->orbitPose(double(frame) * kSecondsPerFrame);
     return mPath->sample(double(frame) * kSecondsPerFrame);
 }
 

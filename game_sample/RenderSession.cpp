@@ -66,6 +66,7 @@ Result<std::unique_ptr<RenderSession>> RenderSession::create(const DemoOptions& 
 RenderSession::~RenderSession() {
     if (!mSelected || !mSelected->backend) return;
     if (mScheduler) mScheduler->waitIdle();
+    for (backend::CharacterHandle character : mCharacters) mSelected->backend->destroyCharacter(character);
     if (mTerrainHandle.valid()) mSelected->backend->destroyTerrain(mTerrainHandle);
     mSelected->backend->shutdown();
 }
@@ -113,6 +114,19 @@ Result<terrain::TessellationSettings> RenderSession::resolveTessellation(const D
     return settings;
 }
 
+Status RenderSession::createCharacters(CharacterCrowd& crowd) {
+    TESSERA_CPU_SCOPE("load.characterUpload");
+    std::vector<backend::CharacterHandle> handles;
+    for (const CrowdAsset& asset : crowd.assets()) {
+        auto handle = mSelected->backend->createCharacter({&asset.asset, asset.box});
+        if (!handle) return fail(asset.file, ": ", handle.error().message);
+        handles.push_back(handle.value());
+        mCharacters.push_back(handle.value());
+    }
+    crowd.bind(std::move(handles));
+    return {};
+}
+
 bool RenderSession::pollWindow() {
     if (!mSwapchain) return true;
     if (mSwapchain->pollEvents()) mSwapchain->recreate();
@@ -121,12 +135,12 @@ bool RenderSession::pollWindow() {
 
 void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera,
                                 const terrain::TessellationSettings& settings, const glm::vec3& clearColor,
-                                bool wireframe, bool readback) {
+                                bool wireframe, bool readback, const backend::CharacterDrawInfo* characters) {
     backend::Backend& backend = *mSelected->backend;
     mVisible.clear();
     {
         TESSERA_CPU_SCOPE("terrain.cull");
-        mTerrain->cull(camera.frustum(), camera.position(), mVisible);
+        if (mTerrainVisible) mTerrain->cull(camera.frustum(), camera.position(), mVisible);
     }
     const std::vector<terrain::CraterSplat> splats = mTerrain->takePendingSplats();
     backend::FrameInfo info;
@@ -145,7 +159,8 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
         if (mScheduler) info.gpu = &mScheduler->beginFrame(frameIndex);
         backend.beginFrame(info);
         backend.splatTerrain(mTerrainHandle, splats);
-        backend.drawTerrain(mTerrainHandle, {mVisible, settings});
+        if (mTerrainVisible) backend.drawTerrain(mTerrainHandle, {mVisible, settings});
+        if (characters) backend.drawCharacters(*characters);
         backend.endFrame();
     }
     if (mScheduler) {
@@ -156,6 +171,9 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
     const backend::FrameReport report = backend.lastFrameReport();
     profiler.recordCounter({"patches drawn", uint64_t(frameIndex), profiler.nowNs(), double(report.terrainPatchesDrawn)});
     profiler.recordCounter({"craters splatted", uint64_t(frameIndex), profiler.nowNs(), double(report.splatsApplied)});
+    if (characters)
+        profiler.recordCounter({"character triangles", uint64_t(frameIndex), profiler.nowNs(),
+                                double(report.characterTriangles)});
 }
 
 std::vector<uint8_t> RenderSession::finish() {

@@ -4,6 +4,7 @@
 /// a window: what the flythrough and the benchmark share.
 
 #include "BackendSelection.h"
+#include "CharacterCrowd.h"
 #include "DemoOptions.h"
 #include "tessera/gpu/FrameScheduler.h"
 #include "tessera/gpu/RenderTarget.h"
@@ -38,12 +39,25 @@ public:
     /// the default mode, and a clear error for a mode or level it cannot draw.
     Result<terrain::TessellationSettings> resolveTessellation(const DemoOptions& options) const;
 
+    /// Uploads every asset of `crowd` to the backend and binds the handles
+    /// (destroyed with the session). An asset the backend cannot draw is an
+    /// error naming its file.
+    Status createCharacters(CharacterCrowd& crowd);
+    /// The largest character tessellation level the backend draws.
+    float maxCharacterLevel() const { return capabilities().maxTessFactor; }
+
+    /// Whether frames draw the terrain (--no-terrain leaves characters alone
+    /// on the clear colour; craters still land on the height map).
+    void setTerrainVisible(bool visible) { mTerrainVisible = visible; }
+
     /// Handles window events; false once the window was closed.
     bool pollWindow();
     /// Records and submits one frame: pending craters into the GPU height
-    /// map, culling, the terrain draw. Reads the image back when `readback`.
+    /// map, culling, the terrain draw, then `characters` when given. Reads the
+    /// image back when `readback`.
     void renderFrame(uint32_t frameIndex, const scene::Camera& camera, const terrain::TessellationSettings& settings,
-                     const glm::vec3& clearColor, bool wireframe, bool readback);
+                     const glm::vec3& clearColor, bool wireframe, bool readback,
+                     const backend::CharacterDrawInfo* characters = nullptr);
     /// Waits for the GPU; the last read-back image (RGBA8), empty if none.
     std::vector<uint8_t> finish();
     /// The backend's own account of its last recorded frame (intermediate
@@ -63,6 +77,8 @@ private:
     std::unique_ptr<gpu::RenderTarget> mTarget;
     std::unique_ptr<gpu::FrameScheduler> mScheduler;
     backend::TerrainHandle mTerrainHandle;
+    std::vector<backend::CharacterHandle> mCharacters;
+    bool mTerrainVisible = true;
     uint32_t mWidth = 0;
     uint32_t mHeight = 0;
     std::vector<uint32_t> mVisible;

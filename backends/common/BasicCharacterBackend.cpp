@@ -78,20 +78,25 @@ void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& dra
         tessellator::TessFactors factors;
         factors.outer = {instance.level, instance.level, instance.level, instance.level};
         factors.inner = {instance.level, instance.level};
-        mReport.trianglesSubmitted +=
+        const uint64_t triangles =
             uint64_t(instance.character->triangleCount()) *
             tessellator::Tessellator::countTriangles(tessellator::Domain::Triangle,
                                                      tessellator::Partitioning::FractionalOdd, factors);
+        mReport.characterTriangles += triangles;
+        mReport.trianglesSubmitted += triangles;
     }
     ++mReport.passes;
 }
 
 CharacterPushFn BasicCharacterBackend::characterPush() {
-    return [this](VkPipelineBindPoint point, const gpu::PipelineLayout& layout, const CharacterInstance& instance,
-                  std::span<const VkWriteDescriptorSet> extra) { pushCharacterDescriptors(point, layout, instance, extra); };
+    return [this](VkPipelineBindPoint point, CharacterBindings bindings, const gpu::PipelineLayout& layout,
+                  const CharacterInstance& instance, std::span<const VkWriteDescriptorSet> extra) {
+        pushCharacterDescriptors(point, bindings, layout, instance, extra);
+    };
 }
 
-void BasicCharacterBackend::pushCharacterDescriptors(VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout,
+void BasicCharacterBackend::pushCharacterDescriptors(VkPipelineBindPoint bindPoint, CharacterBindings bindings,
+                                                     const gpu::PipelineLayout& layout,
                                                      const CharacterInstance& instance,
                                                      std::span<const VkWriteDescriptorSet> extra) {
     GpuCharacter& c = *instance.character;
@@ -113,7 +118,7 @@ void BasicCharacterBackend::pushCharacterDescriptors(VkPipelineBindPoint bindPoi
         w.pBufferInfo = &buffers[i];
         writes.push_back(w);
     }
-    if (bindPoint == VK_PIPELINE_BIND_POINT_GRAPHICS) {
+    if (bindings == CharacterBindings::Draw) {
         for (int i = 0; i < 3; ++i) {
             VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
             w.dstBinding = imageBindings[i];

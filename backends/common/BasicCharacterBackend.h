@@ -29,10 +29,14 @@ struct CharacterInstance {
     float level = 1.0f;          ///< clamped to the backend's maximum
 };
 
+/// Which of the shared bindings a character pipeline declares: pass 1 reads
+/// the uniforms and palette only; pass 2 also samples the maps.
+enum class CharacterBindings { Skin, Draw };
+
 /// How a backend's character pass objects push their descriptors through the
 /// backend, so the pass classes stay separate from the backend class.
-using CharacterPushFn = std::function<void(VkPipelineBindPoint, const gpu::PipelineLayout&, const CharacterInstance&,
-                                           std::span<const VkWriteDescriptorSet>)>;
+using CharacterPushFn = std::function<void(VkPipelineBindPoint, CharacterBindings, const gpu::PipelineLayout&,
+                                           const CharacterInstance&, std::span<const VkWriteDescriptorSet>)>;
 
 class BasicCharacterBackend : public BasicTerrainBackend {
 public:
@@ -51,10 +55,11 @@ protected:
     /// Pass 2, inside the main pass.
     virtual void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) = 0;
 
-    /// Pushes the bindings every character draw shares (frame, character,
-    /// palette, maps) plus `extra` (the cage and compressed cage as the
-    /// technique reads them).
-    void pushCharacterDescriptors(VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout,
+    /// Pushes the bindings every character pipeline shares (frame, character,
+    /// palette, and the maps for `Draw`) plus `extra` (the cage and
+    /// compressed cage as the technique reads them).
+    void pushCharacterDescriptors(VkPipelineBindPoint bindPoint, CharacterBindings bindings,
+                                  const gpu::PipelineLayout& layout,
                                   const CharacterInstance& instance, std::span<const VkWriteDescriptorSet> extra);
     /// pushCharacterDescriptors as a callable for the pass objects.
     CharacterPushFn characterPush();

@@ -48,6 +48,11 @@ EmulatedCharacterPass::EmulatedCharacterPass(gpu::Device& device, const std::str
         desc.vertexBindings = {{0, sizeof(float) * 2, VK_VERTEX_INPUT_RATE_VERTEX},
                                {1, sizeof(uint32_t) * 3, VK_VERTEX_INPUT_RATE_INSTANCE}};
         desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}, {1, 1, VK_FORMAT_R32G32B32_UINT, 0}};
+        // Back faces culled. Camera::projection flips Y for Vulkan's
+        // framebuffer, which turns glTF's counter-clockwise front faces into
+        // clockwise ones on screen.
+        desc.cullMode = VK_CULL_MODE_BACK_BIT;
+        desc.frontFace = VK_FRONT_FACE_CLOCKWISE;
         desc.colorFormats = {colorFormat};
         desc.depthFormat = depthFormat;
         const std::string base = backendName + ".character." + (single ? "singlePass" : "twoPass");
@@ -121,7 +126,7 @@ void EmulatedCharacterPass::record(gpu::FrameContext& frame, const CharacterInst
     const VkBufferView compressed = instance.compressed ? instance.compressed->view.handle() : cage;
     const VkWriteDescriptorSet writes[2] = {texelWrite(TS_BINDING_CAGE_VERTICES, &cage),
                                             texelWrite(TS_BINDING_COMPRESSED, &compressed)};
-    push(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, instance, writes);
+    push(VK_PIPELINE_BIND_POINT_GRAPHICS, CharacterBindings::Draw, mLayout, instance, writes);
     const gpu::Buffer& stream = mSlots[frame.slot()].stream;
     const VkBuffer buffers[2] = {stream.handle(), c.indices().handle()};
     const VkDeviceSize offsets[2] = {pattern.vertexOffset, 0};

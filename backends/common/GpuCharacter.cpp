@@ -123,8 +123,11 @@ Result<std::unique_ptr<GpuCharacter>> GpuCharacter::create(gpu::Device& device, 
     auto usable = [](const std::optional<TextureImage>& t, TextureFormat f) {
         return t && !t->empty() && t->format == f && t->bytes.size() == size_t(t->width) * t->height * t->bytesPerTexel();
     };
+    // UNORM, not SRGB: the frame is lit and stored in display space (an UNORM
+    // target, no output transfer), as the terrain's colours are; decoding
+    // the albedo to linear here would darken characters against the terrain.
     c->mBaseColor = makeImage(device, usable(asset.baseColor, TextureFormat::Rgba8) ? *asset.baseColor : grey,
-                              VK_FORMAT_R8G8B8A8_SRGB, name + ".baseColor");
+                              VK_FORMAT_R8G8B8A8_UNORM, name + ".baseColor");
     c->mNormalMap = makeImage(device, usable(asset.normalMap, TextureFormat::Rgba8) ? *asset.normalMap : flat,
                               VK_FORMAT_R8G8B8A8_UNORM, name + ".normalMap");
     const bool displaced = asset.displacement && usable(std::optional<TextureImage>(asset.displacement->image),

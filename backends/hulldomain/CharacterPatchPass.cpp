@@ -41,6 +41,11 @@ CharacterPatchPass::CharacterPatchPass(gpu::Device& device, VkFormat colorFormat
         // No vertex streams: the vertex stage reads by gl_VertexIndex.
         desc.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
         desc.patchControlPoints = 3;
+        // Back faces culled. Camera::projection flips Y for Vulkan's
+        // framebuffer, which turns glTF's counter-clockwise front faces into
+        // clockwise ones on screen.
+        desc.cullMode = VK_CULL_MODE_BACK_BIT;
+        desc.frontFace = VK_FRONT_FACE_CLOCKWISE;
         desc.colorFormats = {colorFormat};
         desc.depthFormat = depthFormat;
         const std::string base = std::string("hulldomain.character.") + (single ? "singlePass" : "twoPass");
@@ -67,7 +72,7 @@ void CharacterPatchPass::record(gpu::FrameContext& frame, const CharacterInstanc
     const VkWriteDescriptorSet writes[2] = {
         bufferWrite(TS_BINDING_CAGE_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &cage),
         bufferWrite(TS_BINDING_COMPRESSED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &compressed)};
-    push(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, instance, writes);
+    push(VK_PIPELINE_BIND_POINT_GRAPHICS, CharacterBindings::Draw, mLayout, instance, writes);
     vkCmdBindIndexBuffer(cmd, c.indices().handle(), 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cmd, c.triangleCount() * 3, 1, 0, 0, 0);
 }

@@ -29,7 +29,7 @@ void CharacterSkinPass::record(gpu::FrameContext& frame, const CharacterInstance
     const VkDescriptorBufferInfo out{instance.compressed->buffer.handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet writes[2] = {bufferWrite(TS_BINDING_CAGE_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &cage),
                                             bufferWrite(TS_BINDING_COMPRESSED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &out)};
-    push(VK_PIPELINE_BIND_POINT_COMPUTE, mLayout, instance, writes);
+    push(VK_PIPELINE_BIND_POINT_COMPUTE, CharacterBindings::Skin, mLayout, instance, writes);
     vkCmdDispatch(cmd, (c.vertexCount() + 63) / 64, 1, 1);
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);

@@ -95,7 +95,11 @@ public:
             const uint64_t cage = asset->cage.triangleCount();
             ++mReport.charactersDrawn;
             mReport.characterCageTriangles += cage;
-            mReport.trianglesSubmitted += cage * characterTriangles(std::min(item.tessLevel, kMaxTessFactor));
+            const uint64_t triangles =
+                cage * characterTriangles(std::clamp(std::isnan(item.tessLevel) ? 1.0f : item.tessLevel, 1.0f,
+                                                     kMaxTessFactor));
+            mReport.characterTriangles += triangles;
+            mReport.trianglesSubmitted += triangles;
         }
         if (!draw.items.empty()) ++mReport.passes;
     }

@@ -70,7 +70,7 @@ void R2vbCharacterSkinPass::record(gpu::FrameContext& frame, const CharacterInst
     gpu::Image* const attachments[1] = {&target};
     r2vb::beginPoints(cmd, attachments, rows, mLayout);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
-    push(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, instance, {});
+    push(VK_PIPELINE_BIND_POINT_GRAPHICS, CharacterBindings::Skin, mLayout, instance, {});
     const VkBuffer stream = c.vertices().handle();
     const VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &stream, &offset);

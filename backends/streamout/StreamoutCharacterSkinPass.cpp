@@ -41,7 +41,7 @@ void StreamoutCharacterSkinPass::record(gpu::FrameContext& frame, const Characte
     GpuCharacter& c = *instance.character;
     streamout::beginStreamOut(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
-    push(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, instance, {});
+    push(VK_PIPELINE_BIND_POINT_GRAPHICS, CharacterBindings::Skin, mLayout, instance, {});
     const VkBuffer stream = c.vertices().handle();
     const VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &stream, &zero);

@@ -15,6 +15,9 @@ struct FrameReport {
     /// superprimitives before tessellation).
     uint32_t charactersDrawn = 0;
     uint64_t characterCageTriangles = 0;
+    /// The characters' tessellated triangles (also in trianglesSubmitted):
+    /// with characterCageTriangles, the paper's amplification.
+    uint64_t characterTriangles = 0;
     /// Triangles the backend submitted (before clipping), as it computes them.
     uint64_t trianglesSubmitted = 0;
     uint32_t passes = 0;

@@ -1,0 +1,208 @@
+#include "CharacterCrowd.h"
+
+#include "ContentLocator.h"
+#include "tessera/assets/GltfLoader.h"
+#include "tessera/character/AnimatedBounds.h"
+#include "tessera/core/Log.h"
+#include "tessera/profiler/CpuScope.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace tessera::demo {
+namespace {
+
+constexpr uint32_t kFroblinSeeds = 3;       // content/characters/froblin_1..3.glb
+constexpr float kOrbitHeight = 1.6f;        // camera height above the site
+constexpr float kOrbitSpeed = 0.15f;        // radians per second
+constexpr float kLookHeight = 0.6f;         // the camera aims this high above the site
+// The orbit starts on the sun's side (the azimuth of FrameInfo's default sun,
+// atan2(0.4, 0.3)), so the first frames show lit faces.
+constexpr float kOrbitStart = 0.93f;
+
+float meanEdgeLength(const character::CageMesh& cage) {
+    double sum = 0.0;
+    const size_t n = cage.indices.size();
+    for (size_t t = 0; t + 2 < n; t += 3)
+        for (int e = 0; e < 3; ++e)
+            sum += glm::distance(cage.vertices[cage.indices[t + e]].position,
+                                 cage.vertices[cage.indices[t + (e + 1) % 3]].position);
+    return n ? float(sum / double(n)) : 0.0f;
+}
+
+int findClip(const character::CharacterAsset& asset, const char* name) {
+    for (size_t i = 0; i < asset.clips.size(); ++i)
+        if (asset.clips[i].name == name) return int(i);
+    return asset.clips.empty() ? -1 : 0;
+}
+
+// The flattest spot (smallest height change over a character-sized
+// neighbourhood) on a grid over the terrain's middle: crowds on a cliff face
+// would be hidden by the ground.
+glm::vec3 findSite(const terrain::Terrain& terrain) {
+    const glm::vec2 size = terrain.field().worldSize();
+    constexpr int kSteps = 32;
+    constexpr float kReach = 12.0f;
+    float bestSlope = 1e30f;
+    glm::vec2 best = size * 0.5f;
+    for (int j = 0; j <= kSteps; ++j)
+        for (int i = 0; i <= kSteps; ++i) {
+            const glm::vec2 p = size * (0.3f + 0.4f * glm::vec2(float(i), float(j)) / float(kSteps));
+            const float h = terrain.heightAt(p.x, p.y);
+            float slope = 0.0f;
+            for (glm::vec2 d : {glm::vec2(kReach, 0), glm::vec2(-kReach, 0), glm::vec2(0, kReach), glm::vec2(0, -kReach)})
+                slope = std::max(slope, std::abs(terrain.heightAt(p.x + d.x, p.y + d.y) - h));
+            if (slope < bestSlope) bestSlope = slope, best = p;
+        }
+    return {best.x, terrain.heightAt(best.x, best.y), best.y};
+}
+
+} // namespace
+
+Status CharacterCrowd::addAsset(const std::string& file) {
+    TESSERA_CPU_SCOPE("load.character");
+    auto loaded = assets::loadCharacter(file);
+    if (!loaded) return loaded.error();
+    CrowdAsset entry;
+    entry.file = file;
+    entry.asset = std::move(loaded.value());
+    if (entry.asset.cage.indices.empty()) return fail(file, ": has no triangles to draw");
+    entry.box = character::animatedBounds(entry.asset);
+    entry.meanEdge = meanEdgeLength(entry.asset.cage);
+    mAssets.push_back(std::move(entry));
+    return {};
+}
+
+Result<std::unique_ptr<CharacterCrowd>> CharacterCrowd::load(const DemoOptions& options,
+                                                             const terrain::Terrain& terrain) {
+    std::unique_ptr<CharacterCrowd> crowd(new CharacterCrowd());
+    crowd->mTerrain = &terrain;
+    crowd->mSite = findSite(terrain);
+    crowd->mOrbitDistance = options.orbitDistance;
+
+    const uint32_t froblins = std::min(options.crowd, kFroblinSeeds);
+    for (uint32_t seed = 1; seed <= froblins; ++seed) {
+        auto file = locateContent(options.contentDir, "characters/froblin_" + std::to_string(seed) + ".glb");
+        if (!file) return file.error();
+        if (Status ok = crowd->addAsset(file.value().string()); !ok) return ok.error();
+    }
+    // CesiumMan is Khronos sample data the build copies from ../shared/testdata
+    // when it is there; the scene goes on without it otherwise.
+    uint32_t cesium = 0;
+    if (options.crowd > 0) {
+        if (auto file = locateContent(options.contentDir, "characters/CesiumMan/CesiumMan.gltf")) {
+            if (Status ok = crowd->addAsset(file.value().string()); !ok) return ok.error();
+            cesium = 1;
+        } else {
+            log::info("CesiumMan not in the content directory (the build copies it from ../shared/testdata); "
+                      "the characters scene goes on without it");
+        }
+    }
+    const uint32_t firstModel = uint32_t(crowd->mAssets.size());
+    for (const std::string& model : options.models)
+        if (Status ok = crowd->addAsset(model); !ok) return ok.error();
+    crowd->populate(options, froblins, cesium, firstModel);
+    return crowd;
+}
+
+void CharacterCrowd::populate(const DemoOptions& options, uint32_t froblins, uint32_t cesium, uint32_t firstModel) {
+    const glm::vec2 site(mSite.x, mSite.z);
+    auto add = [this](uint32_t asset, int clip) -> Member& {
+        Member& m = mMembers.emplace_back();
+        m.asset = asset;
+        m.clip = clip;
+        m.pose = std::make_unique<character::Pose>(mAssets[asset].asset.skeleton);
+        return m;
+    };
+    // Every third creature idles on the inner ring; the others walk circles
+    // of growing radius, alternately clockwise, out of step with each other.
+    for (uint32_t i = 0; froblins && i < options.crowd; ++i) {
+        const auto& asset = mAssets[i % froblins].asset;
+        const bool idle = i % 3 == 2;
+        Member& m = add(i % froblins, findClip(asset, idle ? "idle" : "walk"));
+        m.clipOffset = 0.37f * float(i);
+        m.anchor = site;
+        m.angle = 2.39996f * float(i);  // golden angle: spread around the site
+        if (idle) {
+            m.radius = 0.0f;
+            m.anchor = site + 1.2f * glm::vec2(std::cos(m.angle), std::sin(m.angle));
+        } else {
+            m.radius = 1.6f + 0.55f * float(i);
+            m.speed = (i % 2 ? -1.0f : 1.0f) * 0.75f;
+        }
+    }
+    if (cesium) {
+        Member& m = add(froblins, findClip(mAssets[froblins].asset, "walk"));
+        m.anchor = site;
+        m.radius = 2.6f;
+        m.speed = 1.1f;
+        m.angle = 1.0f;
+    }
+    // --model files stand in a row, playing their first clip: beside the
+    // crowd, or centred on the site when they are alone.
+    const uint32_t models = uint32_t(mAssets.size()) - firstModel;
+    const bool alone = mMembers.empty();
+    for (uint32_t k = 0; k < models; ++k) {
+        const uint32_t a = firstModel + k;
+        Member& m = add(a, mAssets[a].asset.clips.empty() ? -1 : 0);
+        m.anchor = site + (alone ? glm::vec2(1.5f * (float(k) - 0.5f * float(models - 1)), 0.0f)
+                                 : glm::vec2(-1.5f * float(k + 1), 0.8f));
+        m.angle = kOrbitStart;  // facing where the camera starts
+    }
+}
+
+void CharacterCrowd::update(double seconds, const scene::Camera& camera, uint32_t viewportHeight, float maxLevel,
+                            std::optional<float> fixedLevel) {
+    TESSERA_CPU_SCOPE("characters.animate");
+    mItems.clear();
+    const float pixelsPerRadian = float(viewportHeight) / (2.0f * std::tan(0.5f * camera.verticalFov()));
+    for (size_t i = 0; i < mMembers.size(); ++i) {
+        Member& m = mMembers[i];
+        const CrowdAsset& asset = mAssets[m.asset];
+        glm::vec2 at = m.anchor;
+        float heading = m.angle;
+        if (m.radius > 0.0f) {
+            const float theta = m.angle + m.speed / m.radius * float(seconds);
+            at += m.radius * glm::vec2(std::cos(theta), std::sin(theta));
+            // Facing along the circle: +Z (glTF's forward) turned onto the tangent.
+            const glm::vec2 tangent = (m.speed < 0.0f ? -1.0f : 1.0f) * glm::vec2(-std::sin(theta), std::cos(theta));
+            heading = std::atan2(tangent.x, tangent.y);
+        }
+        glm::mat4 world = glm::translate(glm::mat4(1.0f), glm::vec3(at.x, mTerrain->heightAt(at.x, at.y), at.y));
+        world = glm::rotate(world, heading, glm::vec3(0, 1, 0));
+
+        m.pose->reset();
+        if (m.clip >= 0) m.pose->apply(asset.asset.clips[size_t(m.clip)], float(seconds) + m.clipOffset);
+        m.pose->computeGlobals();
+        m.pose->palette(asset.asset.cage, m.palette);
+
+        float level = fixedLevel.value_or(0.0f);
+        if (!fixedLevel) {
+            const glm::vec3 centre = glm::vec3(world * glm::vec4(asset.box.center(), 1.0f));
+            const float distance = std::max(glm::distance(centre, camera.position()), 0.1f);
+            level = asset.meanEdge * pixelsPerRadian / distance / kTargetEdgePixels;
+        }
+        backend::CharacterDrawItem item;
+        item.character = m.asset < mHandles.size() ? mHandles[m.asset] : backend::CharacterHandle{};
+        item.world = world;
+        item.palette = m.palette;
+        item.tessLevel = std::clamp(level, 1.0f, maxLevel);
+        mItems.push_back(item);
+    }
+}
+
+scene::CameraPose CharacterCrowd::orbitPose(double seconds) const {
+    const float a = kOrbitStart + kOrbitSpeed * float(seconds);
+    glm::vec3 position = mSite + glm::vec3(mOrbitDistance * std::sin(a), 0.0f, mOrbitDistance * std::cos(a));
+    position.y = std::max(mSite.y + kOrbitHeight, mTerrain->heightAt(position.x, position.z) + 1.0f);
+    const glm::vec3 d = mSite + glm::vec3(0.0f, kLookHeight, 0.0f) - position;
+    scene::CameraPose pose;
+    pose.position = position;
+    pose.yaw = std::atan2(-d.x, -d.z);
+    pose.pitch = std::atan2(d.y, std::sqrt(d.x * d.x + d.z * d.z));
+    return pose;
+}
+
+} // namespace tessera::demo
