@@ -11,6 +11,22 @@
 
 namespace tessera::backends {
 
+gpu::PipelineLayout characterLayout(gpu::Device& device, CharacterBindings bindings, VkShaderStageFlags stages,
+                                    VkDescriptorType cageType, uint32_t pushConstantBytes,
+                                    VkShaderStageFlags pushConstantStages, std::string name) {
+    std::vector<gpu::BindingDesc> layout = {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
+                                            {TS_BINDING_CHARACTER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
+                                            {TS_BINDING_CHARACTER_PALETTE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages}};
+    if (cageType != VK_DESCRIPTOR_TYPE_MAX_ENUM) {
+        layout.push_back({TS_BINDING_CAGE_VERTICES, cageType, stages});
+        layout.push_back({TS_BINDING_COMPRESSED, cageType, stages});
+    }
+    if (bindings == CharacterBindings::Draw)
+        for (uint32_t binding : {TS_BINDING_BASE_COLOR, TS_BINDING_NORMAL_MAP, TS_BINDING_DISPLACEMENT})
+            layout.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages});
+    return gpu::PipelineLayout(device, layout, pushConstantBytes, pushConstantStages, std::move(name));
+}
+
 Result<backend::CharacterHandle> BasicCharacterBackend::createCharacter(const backend::CharacterDesc& desc) {
     auto created = GpuCharacter::create(*mDevice, desc, compressedCageUsage());
     if (!created) return created.error();

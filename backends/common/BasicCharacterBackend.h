@@ -16,6 +16,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace tessera::backends {
@@ -32,6 +33,15 @@ struct CharacterInstance {
 /// Which of the shared bindings a character pipeline declares: pass 1 reads
 /// the uniforms and palette only; pass 2 also samples the maps.
 enum class CharacterBindings { Skin, Draw };
+
+/// The descriptor layout of a character pipeline, defined next to the
+/// pushes that fill it: the shared bindings of `bindings` (frame, character,
+/// palette, and the maps for Draw) plus the cage and the compressed cage as
+/// `cageType` when the technique reads them through descriptors
+/// (VK_DESCRIPTOR_TYPE_MAX_ENUM when it takes the cage as a vertex stream).
+gpu::PipelineLayout characterLayout(gpu::Device& device, CharacterBindings bindings, VkShaderStageFlags stages,
+                                    VkDescriptorType cageType, uint32_t pushConstantBytes,
+                                    VkShaderStageFlags pushConstantStages, std::string name);
 
 /// How a backend's character pass objects push their descriptors through the
 /// backend, so the pass classes stay separate from the backend class.

@@ -25,16 +25,8 @@ EmulatedCharacterPass::EmulatedCharacterPass(gpu::Device& device, const std::str
                                              VkFormat colorFormat, VkFormat depthFormat, bool wireframe)
     : mDevice(&device), mName(backendName) {
     const VkShaderStageFlags graphics = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
-                                   {TS_BINDING_CHARACTER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
-                                   {TS_BINDING_CHARACTER_PALETTE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
-                                   {TS_BINDING_CAGE_VERTICES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, graphics},
-                                   {TS_BINDING_COMPRESSED, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, graphics},
-                                   {TS_BINDING_BASE_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics},
-                                   {TS_BINDING_NORMAL_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics},
-                                   {TS_BINDING_DISPLACEMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics}},
-                                  0, 0, backendName + ".characterEmulated.layout");
+    mLayout = characterLayout(device, CharacterBindings::Draw, graphics, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 0, 0,
+                              backendName + ".characterEmulated.layout");
     for (int single = 0; single < 2; ++single) {
         gpu::GraphicsPipelineDesc desc;
         desc.layout = &mLayout;

@@ -17,16 +17,8 @@ namespace tessera::backends {
 CharacterPatchPass::CharacterPatchPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat,
                                        bool wireframe) {
     const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
-                                   {TS_BINDING_CHARACTER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
-                                   {TS_BINDING_CHARACTER_PALETTE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
-                                   {TS_BINDING_CAGE_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, graphics},
-                                   {TS_BINDING_COMPRESSED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, graphics},
-                                   {TS_BINDING_BASE_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics},
-                                   {TS_BINDING_NORMAL_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics},
-                                   {TS_BINDING_DISPLACEMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics}},
-                                  0, 0, "hulldomain.characterPatches.layout");
+    mLayout = characterLayout(device, CharacterBindings::Draw, graphics, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 0, 0,
+                              "hulldomain.characterPatches.layout");
     for (int single = 0; single < 2; ++single) {
         gpu::GraphicsPipelineDesc desc;
         desc.layout = &mLayout;

@@ -10,13 +10,8 @@ namespace tessera::backends {
 
 CharacterSkinPass::CharacterSkinPass(gpu::Device& device) {
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
-                                   {TS_BINDING_CHARACTER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
-                                   {TS_BINDING_CHARACTER_PALETTE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
-                                   {TS_BINDING_CAGE_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
-                                   {TS_BINDING_COMPRESSED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute}},
-                                  0, 0, "hulldomain.characterSkin.layout");
+    mLayout = characterLayout(device, CharacterBindings::Skin, compute, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 0, 0,
+                              "hulldomain.characterSkin.layout");
     mPipeline = gpu::ComputePipeline(device, mLayout, character_skin_comp_spv, "hulldomain.characterSkin");
 }
 

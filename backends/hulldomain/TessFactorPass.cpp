@@ -1,5 +1,7 @@
 #include "TessFactorPass.h"
 
+#include "CommandHelpers.h"
+
 #include "FrameUniforms.h"
 #include "TerrainUniforms.h"
 
@@ -55,15 +57,8 @@ void TessFactorPass::record(gpu::FrameContext& frame, GpuTerrain& terrain, const
     const uint32_t invocations = terrain.edgeCount() + terrain.patchCount();
     vkCmdDispatch(cmd, (invocations + 63) / 64, 1, 1);
 
-    VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    barrier.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-    barrier.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-    barrier.dstStageMask = VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT;
-    barrier.dstAccessMask = VK_ACCESS_2_SHADER_STORAGE_READ_BIT;
-    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dependency.memoryBarrierCount = 1;
-    dependency.pMemoryBarriers = &barrier;
-    vkCmdPipelineBarrier2(cmd, &dependency);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
 
 } // namespace tessera::backends

@@ -19,11 +19,8 @@ uint32_t rowsFor(uint32_t vertices) { return (vertices + R2VB_CAGE_WIDTH - 1) / 
 
 R2vbCharacterSkinPass::R2vbCharacterSkinPass(gpu::Device& device) : mDevice(&device) {
     const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_CHARACTER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_CHARACTER_PALETTE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex}},
-                                  sizeof(shader::R2vbTargetConstants), vertex, "r2vb.characterSkin.layout");
+    mLayout = characterLayout(device, CharacterBindings::Skin, vertex, VK_DESCRIPTOR_TYPE_MAX_ENUM,
+                              sizeof(shader::R2vbTargetConstants), vertex, "r2vb.characterSkin.layout");
     gpu::GraphicsPipelineDesc desc =
         r2vb::pointPipeline("r2vb.characterSkin", mLayout, r2vb_character_skin_vert_spv,
                             r2vb_character_skin_frag_spv, {VK_FORMAT_R32G32B32A32_UINT});

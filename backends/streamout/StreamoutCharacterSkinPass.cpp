@@ -11,11 +11,8 @@ namespace tessera::backends {
 
 StreamoutCharacterSkinPass::StreamoutCharacterSkinPass(gpu::Device& device) {
     const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_CHARACTER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_CHARACTER_PALETTE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex}},
-                                  0, 0, "streamout.characterSkin.layout");
+    mLayout = characterLayout(device, CharacterBindings::Skin, vertex, VK_DESCRIPTOR_TYPE_MAX_ENUM, 0, 0,
+                              "streamout.characterSkin.layout");
     gpu::GraphicsPipelineDesc desc;
     desc.name = "streamout.characterSkin";
     desc.layout = &mLayout;

@@ -7,7 +7,7 @@
 
 namespace tessera::gpu {
 
-PipelineLayout::PipelineLayout(Device& device, std::initializer_list<BindingDesc> bindings, uint32_t pushConstantBytes,
+PipelineLayout::PipelineLayout(Device& device, std::span<const BindingDesc> bindings, uint32_t pushConstantBytes,
                                VkShaderStageFlags pushConstantStages, std::string name)
     : mDevice(&device), mPushStages(pushConstantStages) {
     std::vector<VkDescriptorSetLayoutBinding> vkBindings;

@@ -10,6 +10,7 @@
 #include <vulkan/vulkan.h>
 
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,12 @@ struct BindingDesc {
 class PipelineLayout {
 public:
     PipelineLayout() = default;
-    PipelineLayout(Device& device, std::initializer_list<BindingDesc> bindings, uint32_t pushConstantBytes,
+    PipelineLayout(Device& device, std::span<const BindingDesc> bindings, uint32_t pushConstantBytes,
                    VkShaderStageFlags pushConstantStages, std::string name);
+    PipelineLayout(Device& device, std::initializer_list<BindingDesc> bindings, uint32_t pushConstantBytes,
+                   VkShaderStageFlags pushConstantStages, std::string name)
+        : PipelineLayout(device, std::span<const BindingDesc>(bindings.begin(), bindings.size()), pushConstantBytes,
+                         pushConstantStages, std::move(name)) {}
     ~PipelineLayout();
     PipelineLayout(PipelineLayout&& other) noexcept;
     PipelineLayout& operator=(PipelineLayout&& other) noexcept;
