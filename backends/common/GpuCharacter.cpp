@@ -92,7 +92,12 @@ Result<std::unique_ptr<GpuCharacter>> GpuCharacter::create(gpu::Device& device, 
         // shader never reads past the palette.
         g.joints = glm::uvec4(v.weights.x > 0.0f ? v.joints.x : 0, v.weights.y > 0.0f ? v.joints.y : 0,
                               v.weights.z > 0.0f ? v.joints.z : 0, v.weights.w > 0.0f ? v.joints.w : 0);
-        g.weights = v.weights;
+        // Normalised here, once, as character::skinVertex normalises per
+        // vertex: glTF only promises sums near 1. A vertex with no weight
+        // follows joint 0 (the CPU reference keeps it in place; the loader
+        // gives every skinless mesh one identity joint, so the two agree).
+        const float sum = v.weights.x + v.weights.y + v.weights.z + v.weights.w;
+        g.weights = sum > 0.0f ? v.weights / sum : glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
         uvMin = glm::min(uvMin, v.uv);
         uvMax = glm::max(uvMax, v.uv);
         negative += v.tangent.w < 0.0f ? 1 : 0;

@@ -97,7 +97,9 @@ TEST(GltfSamples, CesiumManVariantsAgree) {
         for (size_t k = 1; k < channel.times.size(); ++k) EXPECT_GT(channel.times[k], channel.times[k - 1]);
         for (const auto& v : channel.values) {
             EXPECT_TRUE(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w));
-            if (channel.path == tessera::character::AnimationPath::Rotation) EXPECT_NEAR(glm::length(v), 1.0f, 1e-3f);
+            if (channel.path == tessera::character::AnimationPath::Rotation) {
+                EXPECT_NEAR(glm::length(v), 1.0f, 1e-3f);
+            }
         }
     }
     for (size_t i = 3; i < variants.size(); ++i) delete variants[i];

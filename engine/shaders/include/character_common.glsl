@@ -23,16 +23,20 @@ struct CageSample {
     vec2 uv;
 };
 
-// Linear blend skinning. Normals and tangents go through the blended
-// matrix's upper 3x3 and are renormalised: exact for rotations and uniform
-// scale, which is what skeletons animate (character::skinVertex does the same).
+// Linear blend skinning, as character::skinVertex does it on the CPU (the
+// tests' reference): the weights arrive normalised (GpuCharacter), tangents go
+// through the blended 3x3 and normals through its cofactor matrix, which stays
+// right under the non-uniform scale glTF animations may key; both renormalised.
 CageSample tsSkinCageVertex(CharacterVertex v) {
     mat4 m = uPalette.joints[v.joints.x] * v.weights.x + uPalette.joints[v.joints.y] * v.weights.y +
              uPalette.joints[v.joints.z] * v.weights.z + uPalette.joints[v.joints.w] * v.weights.w;
+    mat3 linear = mat3(m);
+    mat3 cofactor = mat3(cross(linear[1], linear[2]), cross(linear[2], linear[0]), cross(linear[0], linear[1]));
+    if (determinant(linear) < 0.0) cofactor = -cofactor;
     CageSample s;
     s.position = (m * vec4(v.positionU.xyz, 1.0)).xyz;
-    s.normal = normalize(mat3(m) * v.normalV.xyz);
-    s.tangent = normalize(mat3(m) * v.tangent.xyz);
+    s.normal = normalize(cofactor * v.normalV.xyz);
+    s.tangent = normalize(linear * v.tangent.xyz);
     s.uv = vec2(v.positionU.w, v.normalV.w);
     return s;
 }
