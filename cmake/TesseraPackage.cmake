@@ -1,9 +1,11 @@
 # Installs Tessera as a CMake package so a game can
 #   find_package(Tessera REQUIRED)
-#   target_link_libraries(game PRIVATE Tessera::core Tessera::gpu)
+#   target_link_libraries(game PRIVATE Tessera::core Tessera::gpu Tessera::assets)
+# (Tessera::assets, the glTF/Draco character loader, is optional: link it only
+# to load .gltf/.glb files.)
 include(CMakePackageConfigHelpers)
 
-install(TARGETS tessera_core tessera_gpu EXPORT TesseraTargets
+install(TARGETS tessera_core tessera_gpu tessera_assets EXPORT TesseraTargets
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

@@ -75,6 +75,12 @@ void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& dra
         instances.push_back(instance);
     }
     if (instances.empty()) return;
+    // The technique's intermediates, next to the terrain's in the report: the
+    // compressed cages this frame writes (the paper's 16 B per cage vertex)
+    // and the pass objects' own targets and streams.
+    for (const CharacterInstance& instance : instances)
+        if (instance.compressed) mReport.intermediateBytes += instance.compressed->buffer.size();
+    mReport.intermediateBytes += characterPassBytes();
 
     if (draw.path == backend::CharacterPath::TwoPass) {
         suspendMainPass();

@@ -64,6 +64,9 @@ protected:
     virtual void skinCharacter(const CharacterInstance& instance) = 0;
     /// Pass 2, inside the main pass.
     virtual void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) = 0;
+    /// Bytes of the technique's own character intermediates (render targets,
+    /// pattern streams) beyond the compressed cages, for FrameReport.
+    virtual uint64_t characterPassBytes() const { return 0; }
 
     /// Pushes the bindings every character pipeline shares (frame, character,
     /// palette, and the maps for `Draw`) plus `extra` (the cage and

@@ -90,6 +90,10 @@ void EmulatedTerrainBackend::drawCharacter(const CharacterInstance& instance, ba
     mCharacterPass.record(*mFrame, instance, path, mFrameInfo.wireframe, characterPush());
 }
 
+uint64_t EmulatedTerrainBackend::characterPassBytes() const {
+    return mCharacterPass.bytes() + characterSkinBytes();
+}
+
 uint64_t EmulatedTerrainBackend::patternBytes() const {
     return mPatternVertices.size() + mKeyTable.size();
 }

@@ -46,6 +46,7 @@ protected:
     /// Characters: the emulated tessellator's pattern per level, instanced per
     /// cage triangle (EmulatedCharacterPass); pass 1 is each backend's own.
     void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) final;
+    uint64_t characterPassBytes() const override;
 
     /// Creates the backend's own factor passes.
     virtual Status initializeFactorPasses(const backend::BackendInitInfo& info) = 0;
@@ -59,6 +60,8 @@ protected:
                                                   const gpu::UniformSlice& tessUniforms) = 0;
     /// Bytes of the backend's own intermediate render targets and buffers.
     virtual uint64_t factorPassBytes() const = 0;
+    /// Bytes of the backend's own character pass 1 targets (r2vb's render target).
+    virtual uint64_t characterSkinBytes() const { return 0; }
 
     /// Bytes of the pattern buffers (shared by every frame).
     uint64_t patternBytes() const;

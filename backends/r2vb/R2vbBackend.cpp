@@ -99,8 +99,10 @@ protected:
     uint64_t factorPassBytes() const override {
         uint64_t bytes = 0;
         for (const auto& targets : mTargets) bytes += targets.bytes();
-        return bytes + mCharacterSkin.bytes();
+        return bytes;
     }
+
+    uint64_t characterSkinBytes() const override { return mCharacterSkin.bytes(); }
 
     // The compressed cage is the destination of the render target's copy.
     VkBufferUsageFlags compressedCageUsage() const override { return VK_BUFFER_USAGE_TRANSFER_DST_BIT; }

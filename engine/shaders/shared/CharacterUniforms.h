@@ -40,7 +40,7 @@ struct CharacterUniforms {
     vec4 boxMax;       // xyz: compression box maximum
     vec4 uvRange;      // xy: uv minimum, zw: uv maximum (the compressed uv's range)
     vec4 displacement; // x: scale, y: bias (both 0 with displacement off), z: tessellation level, w: 1 = normal map on
-    uvec4 counts;      // x: cage vertices, y: palette size, z: r2vb target width, w: unused
+    uvec4 counts;      // x: cage vertices, y: palette size, z: r2vb target width, w: 1 = bitangent is -cross(n, t) for the whole character
 };
 TS_CHECK_SIZE(CharacterUniforms, 208)
 

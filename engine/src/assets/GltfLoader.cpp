@@ -11,7 +11,8 @@
 namespace tessera::assets {
 
 Result<character::CharacterAsset> loadCharacter(const std::filesystem::path& file) {
-    const std::string name = file.filename().string();
+    // The path as the user gave it, so the message says which file.
+    const std::string name = file.string();
     try {
         GltfDocument document = GltfDocument::load(file);
         const tinygltf::Model& model = document.model();
