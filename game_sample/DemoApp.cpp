@@ -1,6 +1,7 @@
 #include "DemoApp.h"
 
 #include "BackendSelection.h"
+#include "CharacterBenchmark.h"
 #include "DemoOutputs.h"
 #include "DemoScene.h"
 #include "RenderSession.h"
@@ -16,6 +17,13 @@ namespace tessera::demo {
 namespace {
 
 constexpr uint32_t kDefaultHeadlessFrames = 60;
+
+// A level as a user writes it: "14.99", "20".
+std::string formatNumber(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", double(value));
+    return text;
+}
 
 Status runFlythrough(const DemoOptions& options) {
     auto& profiler = profiler::Profiler::global();
@@ -43,9 +51,9 @@ Status runFlythrough(const DemoOptions& options) {
     CharacterCrowd* crowd = scene.crowd();
     if (crowd) {
         if (options.characterLevel && *options.characterLevel > session.maxCharacterLevel())
-            return fail("--character-level ", std::to_string(*options.characterLevel), ": backend ",
+            return fail("--character-level ", formatNumber(*options.characterLevel), ": backend ",
                         session.capabilities().name, " tessellates up to level ",
-                        std::to_string(session.maxCharacterLevel()));
+                        formatNumber(session.maxCharacterLevel()));
         if (Status ok = session.createCharacters(*crowd); !ok) return ok.error();
     }
 
@@ -89,7 +97,9 @@ int runDemo(const DemoOptions& options) {
     }
     int code = 0;
     {
-        Status ran = options.bench.empty() ? runFlythrough(options) : runTerrainBenchmark(options);
+        Status ran = options.bench.empty()          ? runFlythrough(options)
+                     : options.bench == "characters" ? runCharacterBenchmark(options)
+                                                     : runTerrainBenchmark(options);
         if (!ran) {
             log::error(ran.error().message);
             code = 1;

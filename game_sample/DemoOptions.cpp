@@ -79,8 +79,8 @@ by default, on the best Vulkan device (a GPU, else lavapipe).
 Backend and device:
   --backend NAME        r2vb | streamout | hulldomain | null (default: the
                         most capable backend the device can run); with
-                        --bench terrain also "all": every GPU backend side by
-                        side
+                        --bench terrain or characters also "all": every GPU
+                        backend side by side
   --list-backends       list backends and their capabilities on the device
   --device NAME|INDEX   pick a Vulkan device by index or name substring
   --list-devices        list Vulkan devices
@@ -155,9 +155,19 @@ Output:
                         side-by-side table (GPU ms per pass, triangles,
                         shader invocations, intermediate memory, ratios to
                         hulldomain)
+  --bench characters    run the characters benchmark: the crowd (--crowd,
+                        --model) posed at one time from one camera, drawn
+                        two-pass and single-pass on every backend (or
+                        --backend NAME; all: hulldomain, r2vb, streamout) at
+                        min(--character-level, 14.99), and also at
+                        --character-level where the backend reaches it
+                        (default 32; hulldomain only); reports GPU ms of the
+                        character passes, amplification, Table 1 bytes and
+                        the compressed vertex's error
   --out FILE            where --bench writes its JSON (default: stdout)
   --out-dir DIR         where --bench writes its per-backend traces,
-                        bench-<backend>.json (--backend all: default next to
+                        bench-<backend>.json, bench-characters-<backend>.json
+                        for characters (--backend all: default next to
                         --out, else the current directory)
   --help                this text
 )";
@@ -231,7 +241,8 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         else if (flag == "--out-dir") { TESSERA_TAKE(v); o.benchOutDir = v; }
         else if (flag == "--bench") {
             TESSERA_TAKE(v);
-            if (v != "terrain") return fail("--bench expects \"terrain\", got \"", v, "\"");
+            if (v != "terrain" && v != "characters")
+                return fail("--bench expects \"terrain\" or \"characters\", got \"", v, "\"");
             o.bench = v;
         } else if (flag == "--terrain-mode") {
             TESSERA_TAKE(v);
@@ -288,7 +299,8 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
 #undef TESSERA_TAKE
     }
     if (o.backend == "all" && o.bench.empty())
-        return fail("--backend all compares the backends in --bench terrain; pick one backend for the demo");
+        return fail("--backend all compares the backends in --bench terrain or characters; pick one backend for the "
+                    "demo");
     if (!o.models.empty() && !o.sceneGiven) o.scene = "characters";
     if (!o.models.empty() && o.scene != "characters")
         return fail("--model places models in the characters scene; drop --scene terrain");

@@ -19,7 +19,7 @@
 namespace tessera::demo {
 
 struct DemoOptions {
-    std::string backend;                ///< empty: best backend the device runs; "all" (--bench terrain only): every GPU backend
+    std::string backend;                ///< empty: best backend the device runs; "all" (--bench only): every GPU backend
     std::string device;                 ///< --device NAME|INDEX
     std::vector<std::string> pluginDirs; ///< --plugin-dir (repeatable)
     std::string contentDir;             ///< --content DIR
@@ -67,10 +67,12 @@ struct DemoOptions {
     backend::CharacterPath characterPath = backend::CharacterPath::TwoPass; ///< --character-path
     std::optional<float> characterLevel; ///< --character-level L; unset: from each character's size on screen
 
-    /// --bench terrain: the Table 2 benchmark instead of the flythrough.
+    /// --bench terrain (the Table 2 benchmark) or characters (two-pass vs
+    /// single-pass, amplification, Table 1, compression error) instead of
+    /// the flythrough.
     std::string bench;
     std::string benchOut;               ///< --out FILE (default: stdout)
-    /// --out-dir DIR: where --bench terrain writes one Chrome trace per backend
+    /// --out-dir DIR: where --bench writes one Chrome trace per backend
     /// (bench-<backend>.json). With --backend all they are written anyway:
     /// next to --out, else in the current directory.
     std::string benchOutDir;
