@@ -158,6 +158,7 @@ void CharacterCrowd::update(double seconds, const scene::Camera& camera, uint32_
     TESSERA_CPU_SCOPE("characters.animate");
     mItems.clear();
     const float pixelsPerRadian = float(viewportHeight) / (2.0f * std::tan(0.5f * camera.verticalFov()));
+    const scene::Frustum frustum = camera.frustum();
     for (size_t i = 0; i < mMembers.size(); ++i) {
         Member& m = mMembers[i];
         const CrowdAsset& asset = mAssets[m.asset];
@@ -172,6 +173,9 @@ void CharacterCrowd::update(double seconds, const scene::Camera& camera, uint32_
         }
         glm::mat4 world = glm::translate(glm::mat4(1.0f), glm::vec3(at.x, mTerrain->heightAt(at.x, at.y), at.y));
         world = glm::rotate(world, heading, glm::vec3(0, 1, 0));
+        // The compression box holds every pose the clips reach, so a character
+        // outside the view this frame can skip its pose and both passes.
+        if (!frustum.intersects(asset.box.transformed(world))) continue;
 
         m.pose->reset();
         if (m.clip >= 0) m.pose->apply(asset.asset.clips[size_t(m.clip)], float(seconds) + m.clipOffset);

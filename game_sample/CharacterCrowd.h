@@ -12,6 +12,7 @@
 #include "tessera/core/Result.h"
 #include "tessera/scene/Aabb.h"
 #include "tessera/scene/Camera.h"
+#include "tessera/scene/Frustum.h"
 #include "tessera/terrain/Terrain.h"
 
 #include <memory>
@@ -43,7 +44,9 @@ public:
     /// The backend's handles, in assets() order, before the first items().
     void bind(std::vector<backend::CharacterHandle> handles) { mHandles = std::move(handles); }
 
-    /// Poses everybody at `seconds` and makes this frame's draw items. The
+    /// Poses everybody in view at `seconds` (characters whose animated box is
+    /// outside the camera's frustum are skipped) and makes this frame's draw
+    /// items. The
     /// level is `fixedLevel` when given, else chosen so a tessellated edge
     /// covers about kTargetEdgePixels on screen; clamped to [1, maxLevel].
     void update(double seconds, const scene::Camera& camera, uint32_t viewportHeight, float maxLevel,
