@@ -58,7 +58,7 @@ public:
     /// The characters scene's camera at `seconds`: circling the site.
     scene::CameraPose orbitPose(double seconds) const;
 
-    static constexpr float kTargetEdgePixels = 4.0f;
+    static constexpr float kTargetEdgePixels = 1.0f;
 
 private:
     struct Member {
