@@ -4,6 +4,7 @@
 #include "CharacterBenchFigures.h"
 #include "CharacterBenchReport.h"
 #include "DemoScene.h"
+#include "BenchTrace.h"
 #include "RenderSession.h"
 #include "TerrainBenchReport.h"
 #include "tessera/core/Log.h"
@@ -83,22 +84,6 @@ void summarizeRow(const profiler::Profiler& profiler, uint64_t first, uint64_t e
     for (const std::string& name : order) row.passes.emplace_back(name, series(perPass[name]).median);
 }
 
-/// A CPU-track slice name that lives as long as the process (CpuEvent keeps
-/// only the pointer, and the global profiler is never destroyed).
-const char* internName(const std::string& name) {
-    static auto* names = new std::set<std::string>();
-    return names->insert(name).first->c_str();
-}
-
-/// Where the per-backend traces go ("" for none), as --bench terrain: --out-dir,
-/// else with --backend all next to --out or in the current directory.
-std::filesystem::path traceDirectory(const DemoOptions& options) {
-    if (!options.benchOutDir.empty()) return options.benchOutDir;
-    if (options.backend != "all") return {};
-    const auto parent = std::filesystem::path(options.benchOut).parent_path();
-    return parent.empty() ? std::filesystem::path(".") : parent;
-}
-
 std::string levelText(double level) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", level);
@@ -161,7 +146,7 @@ Status runCharacterBenchmark(const DemoOptions& options) {
                                 ", the emulated tessellator's maximum; backends that tessellate further also at " +
                                 levelText(requested));
 
-    const std::filesystem::path traceDir = traceDirectory(options);
+    const std::filesystem::path traceDir = benchTraceDirectory(options);
     if (!traceDir.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(traceDir, ec);
@@ -227,7 +212,7 @@ Status runCharacterBenchmark(const DemoOptions& options) {
                 summary.crowdMembers = std::max(summary.crowdMembers, row.charactersDrawn);
                 // One slice per row on the CPU track, so the trace reads as the table's rows.
                 const std::string label = row.path + " level " + levelText(level);
-                profiler.recordCpu({internName(label), profiler::Profiler::currentThreadId(), first, rowStartNs,
+                profiler.recordCpu({internBenchName(label), profiler::Profiler::currentThreadId(), first, rowStartNs,
                                     profiler.nowNs() - rowStartNs, 0});
                 log::info(row.backend + " " + row.path + " level " + levelText(level) + ": " +
                           std::to_string(row.characterMsMedian) + " ms, " + std::to_string(row.triangles) +
@@ -235,15 +220,7 @@ Status runCharacterBenchmark(const DemoOptions& options) {
             }
         }
         if (!tracePath.empty()) {
-            profiler::TraceMetadata meta;
-            meta.application = "tessera bench characters";
-            meta.backend = caps.name;
-            meta.device = session.deviceName();
-            meta.driver = session.driverName();
-            meta.width = session.width();
-            meta.height = session.height();
-            if (auto w = profiler::writeChromeTrace(profiler, tracePath, meta); !w) return w;
-            log::info("wrote " + tracePath);
+            if (auto w = writeBenchTrace(profiler, tracePath, "tessera bench characters", session); !w) return w;
         }
     }
     profiler.clear();

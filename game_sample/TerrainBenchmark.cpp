@@ -2,6 +2,7 @@
 
 #include "BackendSelection.h"
 #include "DemoScene.h"
+#include "BenchTrace.h"
 #include "RenderSession.h"
 #include "TerrainBenchReport.h"
 #include "tessera/core/Log.h"
@@ -75,13 +76,6 @@ std::vector<DemoOptions> benchRuns(const DemoOptions& options, const backend::Ba
         }
     }
     return runs;
-}
-
-/// A CPU-track slice name that lives as long as the process (CpuEvent keeps
-/// only the pointer, and the global profiler is never destroyed).
-const char* internName(const std::string& name) {
-    static auto* names = new std::set<std::string>();
-    return names->insert(name).first->c_str();
 }
 
 /// The benchmark summary of frames [first, end) of `source`. The GPU passes
@@ -161,18 +155,6 @@ TerrainBenchRecord makeRecord(const RenderSession& session, const char* view,
     return r;
 }
 
-/// Where the per-backend traces go ("" for none): --out-dir, else with
-/// --backend all next to --out or in the current directory.
-std::filesystem::path traceDirectory(const DemoOptions& options) {
-    if (!options.benchOutDir.empty()) return options.benchOutDir;
-    if (options.backend != "all") return {};
-    if (!options.benchOut.empty()) {
-        const auto parent = std::filesystem::path(options.benchOut).parent_path();
-        return parent.empty() ? std::filesystem::path(".") : parent;
-    }
-    return ".";
-}
-
 /// The emulated tessellator's largest level: the common cap of --backend all.
 constexpr float kComparisonMaxLevel = tessellator::ContinuousLevel::kMaxLevel;
 
@@ -202,7 +184,7 @@ Status runTerrainBenchmark(const DemoOptions& options) {
         return fail("--tess-max ", level(options.tessellation.maxLevel),
                     ": --backend all compares the backends at the emulated tessellator's levels, 1 to ",
                     level(kComparisonMaxLevel));
-    const std::filesystem::path traceDir = traceDirectory(options);
+    const std::filesystem::path traceDir = benchTraceDirectory(options);
     if (!traceDir.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(traceDir, ec);
@@ -276,22 +258,14 @@ Status runTerrainBenchmark(const DemoOptions& options) {
                     // as the table's rows.
                     const std::string label =
                         std::string(view.name) + " " + r.mode + (r.metric != "-" ? "/" + r.metric : std::string());
-                    profiler.recordCpu({internName(label), profiler::Profiler::currentThreadId(), first, rowStartNs,
+                    profiler.recordCpu({internBenchName(label), profiler::Profiler::currentThreadId(), first, rowStartNs,
                                         profiler.nowNs() - rowStartNs, 0});
                     log::info(r.device + " " + r.backend + " " + r.view + " " + r.mode + " " + r.metric + ": " +
                               std::to_string(r.gpuMsMedian) + " ms, " + std::to_string(r.triangles) + " triangles");
                 }
             }
             if (!tracePath.empty() && records.size() > firstRecord) {
-                profiler::TraceMetadata meta;
-                meta.application = "tessera bench terrain";
-                meta.backend = caps.name;
-                meta.device = session.deviceName();
-                meta.driver = session.driverName();
-                meta.width = session.width();
-                meta.height = session.height();
-                if (auto w = profiler::writeChromeTrace(profiler, tracePath, meta); !w) return w;
-                log::info("wrote " + tracePath);
+                if (auto w = writeBenchTrace(profiler, tracePath, "tessera bench terrain", session); !w) return w;
             }
         }
     }

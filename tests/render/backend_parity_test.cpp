@@ -15,6 +15,7 @@
 // printed for every backend but not compared: each technique reaches the same
 // triangles through different stages.
 #include "DemoProcess.h"
+#include "TestFiles.h"
 #include "ImageCompare.h"
 #include "JsonReader.h"
 
@@ -105,19 +106,6 @@ std::vector<ParityCase> parityCases() {
     };
 }
 
-std::filesystem::path outputDir() {
-    const std::filesystem::path dir = std::filesystem::path(TESSERA_TEST_OUTPUT_DIR) / "backend_parity";
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-
-std::string slurp(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 std::string commandLine(const std::vector<std::string>& args) {
     std::string text = "tessera-demo";
     for (const auto& a : args) {
@@ -151,7 +139,7 @@ struct BackendRun {
 void readStats(const std::string& path, const std::string& passName, BackendRun& run) {
     JsonValue report;
     std::string error;
-    if (!parseJson(slurp(path), report, error)) {
+    if (!parseJson(readTextFile(path), report, error)) {
         run.error = path + ": " + error;
         return;
     }
@@ -183,7 +171,7 @@ void readStats(const std::string& path, const std::string& passName, BackendRun&
 }
 
 BackendRun runBackend(const ParityCase& c, const std::string& backend) {
-    const auto dir = outputDir();
+    const auto dir = testOutputDir("backend_parity");
     const std::string stem = (dir / (c.name + "." + backend)).string();
     BackendRun run;
     run.backend = backend;
@@ -280,7 +268,7 @@ TEST_P(BackendParity, TrianglesAndImagesMatchHulldomain) {
         auto actual = readPng(run.screenshot);
         EXPECT_TRUE(actual.ok()) << run.screenshot;
         if (!actual.ok()) continue;
-        const std::string diffPath = (outputDir() / (c.name + "." + backend + ".diff.png")).string();
+        const std::string diffPath = (testOutputDir("backend_parity") / (c.name + "." + backend + ".diff.png")).string();
         std::filesystem::remove(diffPath);
         const auto cmp = compareImages(actual.value(), expected.value(), kParityTolerance, diffPath);
         const PixelDelta delta = pixelDelta(actual.value(), expected.value());
@@ -318,7 +306,7 @@ TEST(BackendParitySensitivity, DetectsAChangedLevel) {
     auto a = readPng(base.screenshot);
     auto b = readPng(moved.screenshot);
     ASSERT_TRUE(a.ok() && b.ok());
-    const std::string diffPath = (outputDir() / "sensitivity_l3_9.diff.png").string();
+    const std::string diffPath = (testOutputDir("backend_parity") / "sensitivity_l3_9.diff.png").string();
     const auto cmp = compareImages(b.value(), a.value(), kParityTolerance, diffPath);
     const PixelDelta delta = pixelDelta(b.value(), a.value());
     std::cout << "[parity] level 3.9 vs 3.7 on hulldomain: " << delta.anyDifference << " pixels differ at all, "
@@ -334,7 +322,7 @@ TEST(BackendParitySensitivity, DetectsAChangedLevel) {
 // triangles hulldomain draws, row by row, and the records carry the per-pass
 // figures and the intermediate memory of the side-by-side table.
 TEST(BackendParityBench, BackendAllAgreesOnTrianglesAndWritesATracePerBackend) {
-    const auto dir = outputDir() / "bench_all";
+    const auto dir = testOutputDir("backend_parity") / "bench_all";
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     const std::string out = (dir / "terrain.json").string();
@@ -348,7 +336,7 @@ TEST(BackendParityBench, BackendAllAgreesOnTrianglesAndWritesATracePerBackend) {
 
     JsonValue records;
     std::string error;
-    ASSERT_TRUE(parseJson(slurp(out), records, error)) << out << ": " << error;
+    ASSERT_TRUE(parseJson(readTextFile(out), records, error)) << out << ": " << error;
     ASSERT_TRUE(records.isArray()) << out;
     // 2 views x (lowres, continuous, adaptive with 4 metrics) x 3 backends.
     EXPECT_EQ(records.array.size(), 2u * 6u * 3u) << out;
@@ -391,7 +379,7 @@ TEST(BackendParityBench, BackendAllAgreesOnTrianglesAndWritesATracePerBackend) {
     for (const std::string backend : {"hulldomain", "r2vb", "streamout"}) {
         const auto path = dir / ("bench-" + backend + ".json");
         JsonValue trace;
-        ASSERT_TRUE(parseJson(slurp(path), trace, error)) << path << ": " << error;
+        ASSERT_TRUE(parseJson(readTextFile(path), trace, error)) << path << ": " << error;
         const JsonValue* events = trace.find("traceEvents");
         ASSERT_TRUE(events && events->isArray()) << path;
         size_t terrainPasses = 0;

@@ -3,6 +3,7 @@
 // compressed vertex's error). Checks the document's structure and the
 // invariants that hold on any device; GPU times are only checked to be there.
 #include "DemoProcess.h"
+#include "TestFiles.h"
 #include "JsonReader.h"
 
 #include <gtest/gtest.h>
@@ -17,19 +18,6 @@
 using namespace tessera::test;
 
 namespace {
-
-std::filesystem::path outputDir() {
-    const std::filesystem::path dir = std::filesystem::path(TESSERA_TEST_OUTPUT_DIR) / "character_bench";
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-
-std::string slurp(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 double number(const JsonValue& object, const std::string& key) {
     const auto v = object.numberAt(key);
@@ -49,7 +37,7 @@ const JsonValue& member(const JsonValue& object, const std::string& key) {
 class CharacterBench : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        const std::filesystem::path dir = outputDir();
+        const std::filesystem::path dir = testOutputDir("character_bench");
         std::filesystem::remove(dir / "bench.json");
         run = new ProcessResult(runDemo({"--bench",
                                          "characters",
@@ -75,7 +63,7 @@ protected:
                                          dir.string()}));
         document = new JsonValue();
         std::string error;
-        parsed = parseJson(slurp(dir / "bench.json"), *document, error);
+        parsed = parseJson(readTextFile(dir / "bench.json"), *document, error);
         parseError = error;
     }
     static void TearDownTestSuite() {
@@ -99,7 +87,7 @@ TEST_F(CharacterBench, RunsCleanUnderValidation) {
     EXPECT_EQ(document->stringAt("format").value_or(""), "tessera-bench-characters");
     EXPECT_EQ(number(*document, "shared_level"), 3.0);
     for (const char* backend : {"hulldomain", "r2vb", "streamout"})
-        EXPECT_TRUE(std::filesystem::exists(outputDir() / ("bench-characters-" + std::string(backend) + ".json")))
+        EXPECT_TRUE(std::filesystem::exists(testOutputDir("character_bench") / ("bench-characters-" + std::string(backend) + ".json")))
             << backend;
 }
 

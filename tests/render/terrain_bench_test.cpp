@@ -2,6 +2,7 @@
 // backend, view (far, close) and mode (adaptive once per metric unless
 // --tess-metric picks one), with triangle counts and GPU times.
 #include "DemoProcess.h"
+#include "TestFiles.h"
 
 #include <gtest/gtest.h>
 
@@ -22,19 +23,6 @@ namespace {
 
 /// One flat JSON object: key -> raw value text (strings without their quotes).
 using Record = std::map<std::string, std::string>;
-
-std::filesystem::path outputDir() {
-    const std::filesystem::path dir = std::filesystem::path(TESSERA_TEST_OUTPUT_DIR) / "terrain_bench";
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-
-std::string slurp(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 std::string joined(const std::vector<std::string>& args) {
     std::string text = "tessera-demo";
@@ -201,7 +189,7 @@ std::vector<std::string> benchArgs(int width, int height) {
 // One metric: 3 modes x 2 views, and adaptive draws more than the control mesh
 // and less than continuous tessellation in both views.
 TEST(TerrainBench, OneMetricGivesSixRecordsOrderedByTriangles) {
-    const std::string out = (outputDir() / "bench_screen.json").string();
+    const std::string out = (testOutputDir("terrain_bench") / "bench_screen.json").string();
     std::filesystem::remove(out);
     auto args = benchArgs(320, 180);
     args.insert(args.end(), {"--tess-metric", "screen", "--out", out});
@@ -211,7 +199,7 @@ TEST(TerrainBench, OneMetricGivesSixRecordsOrderedByTriangles) {
 
     std::vector<Record> records;
     std::string error;
-    ASSERT_TRUE(parseRecords(slurp(out), records, error)) << out << ": " << error;
+    ASSERT_TRUE(parseRecords(readTextFile(out), records, error)) << out << ": " << error;
     ASSERT_EQ(records.size(), 6u) << out;
     expectWellFormed(records, 320, 180);
     for (const char* view : {"far", "close"}) {
@@ -231,7 +219,7 @@ TEST(TerrainBench, OneMetricGivesSixRecordsOrderedByTriangles) {
 // far view's patches are already under 16 px, so the screen-space metrics may
 // stay at level 1 (as many triangles as lowres) but never fewer.
 TEST(TerrainBench, EveryMetricWritesAnAdaptiveRecordPerView) {
-    const std::string out = (outputDir() / "bench_all.json").string();
+    const std::string out = (testOutputDir("terrain_bench") / "bench_all.json").string();
     std::filesystem::remove(out);
     auto args = benchArgs(160, 90);
     args.insert(args.end(), {"--out", out});
@@ -241,7 +229,7 @@ TEST(TerrainBench, EveryMetricWritesAnAdaptiveRecordPerView) {
 
     std::vector<Record> records;
     std::string error;
-    ASSERT_TRUE(parseRecords(slurp(out), records, error)) << out << ": " << error;
+    ASSERT_TRUE(parseRecords(readTextFile(out), records, error)) << out << ": " << error;
     ASSERT_EQ(records.size(), 12u) << out;
     expectWellFormed(records, 160, 90);
     for (const char* view : {"far", "close"}) {
@@ -261,11 +249,11 @@ TEST(TerrainBench, EveryMetricWritesAnAdaptiveRecordPerView) {
 }
 
 TEST(TerrainBench, WithoutOutTheJsonGoesToStdout) {
-    const std::string errPath = (outputDir() / "bench_stdout.stderr.txt").string();
+    const std::string errPath = (testOutputDir("terrain_bench") / "bench_stdout.stderr.txt").string();
     auto args = benchArgs(160, 90);
     args.insert(args.end(), {"--tess-metric", "detail"});
     const auto run = runDemoStdout(args, errPath);
-    const std::string err = slurp(errPath);
+    const std::string err = readTextFile(errPath);
     ASSERT_EQ(run.exitCode, 0) << joined(args) << "\nstdout:\n" << run.output << "\nstderr:\n" << err;
 
     const size_t first = run.output.find_first_not_of(" \t\r\n");

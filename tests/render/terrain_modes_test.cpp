@@ -4,6 +4,7 @@
 // the pipeline statistics in --benchmark). Backends that draw only the
 // low-resolution mode refuse the others clearly, and level limits are checked.
 #include "DemoProcess.h"
+#include "TestFiles.h"
 
 #include "tessera/core/ImageFile.h"
 
@@ -23,19 +24,6 @@ using namespace tessera::test;
 namespace {
 
 const char* const kCamera = "1800,900,6800,-30,-16";
-
-std::filesystem::path outputDir() {
-    const std::filesystem::path dir = std::filesystem::path(TESSERA_TEST_OUTPUT_DIR) / "terrain_modes";
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-
-std::string slurp(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 std::string joined(const std::vector<std::string>& args) {
     std::string text = "tessera-demo";
@@ -71,7 +59,7 @@ struct ModeRun {
 
 /// One benchmark run of `mode` from the fixed view, with a screenshot.
 ModeRun runMode(const std::string& name, const std::vector<std::string>& extra) {
-    const auto dir = outputDir();
+    const auto dir = testOutputDir("terrain_modes");
     const std::string bench = (dir / (name + ".json")).string();
     ModeRun run;
     run.screenshot = (dir / (name + ".png")).string();
@@ -84,7 +72,7 @@ ModeRun runMode(const std::string& name, const std::vector<std::string>& extra) 
     args.insert(args.end(), extra.begin(), extra.end());
     run.command = joined(args);
     run.result = runDemo(args);
-    if (run.result.exitCode == 0) run.triangles = numberAfter(slurp(bench), "gpuFrame", "clippingInvocations");
+    if (run.result.exitCode == 0) run.triangles = numberAfter(readTextFile(bench), "gpuFrame", "clippingInvocations");
     return run;
 }
 
@@ -169,7 +157,7 @@ TEST(TerrainModes, LowresOnlyBackendsRefuseOtherModes) {
 }
 
 TEST(TerrainModes, LowresOnlyBackendDrawsLowres) {
-    const std::string shot = (outputDir() / "r2vb_lowres.png").string();
+    const std::string shot = (testOutputDir("terrain_modes") / "r2vb_lowres.png").string();
     std::filesystem::remove(shot);
     const std::vector<std::string> args = {
         "--backend", "r2vb",    "--validation", "--terrain-mode", "lowres", "--camera",     kCamera, "--frames",

@@ -5,6 +5,7 @@
 /// the validation layer that hands back its screenshot.
 
 #include "DemoProcess.h"
+#include "TestFiles.h"
 
 #include "tessera/core/ImageFile.h"
 
@@ -89,13 +90,6 @@ inline std::vector<std::string> soloCharacterArgs(const std::string& backend, co
     args.insert(args.end(), {"--clear-color", clearColor, "--orbit-distance", orbitDistance});
     args.insert(args.end(), {"--width", std::to_string(width), "--height", std::to_string(height)});
     return args;
-}
-
-/// A test's own folder under test-output.
-inline std::filesystem::path testOutputDir(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::path(TESSERA_TEST_OUTPUT_DIR) / name;
-    std::filesystem::create_directories(dir);
-    return dir;
 }
 
 } // namespace tessera::test
