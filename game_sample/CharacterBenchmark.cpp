@@ -4,7 +4,7 @@
 #include "CharacterBenchFigures.h"
 #include "CharacterBenchReport.h"
 #include "DemoScene.h"
-#include "BenchTrace.h"
+#include "BenchOutputs.h"
 #include "RenderSession.h"
 #include "TerrainBenchReport.h"
 #include "tessera/core/Log.h"
@@ -84,26 +84,10 @@ void summarizeRow(const profiler::Profiler& profiler, uint64_t first, uint64_t e
     for (const std::string& name : order) row.passes.emplace_back(name, series(perPass[name]).median);
 }
 
-std::string levelText(double level) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", level);
-    return text;
-}
-
 Status writeOutputs(const DemoOptions& options, const CharacterBenchSummary& summary) {
     const std::string json = characterBenchJson(summary);
     const std::string table = characterBenchTable(summary);
-    if (options.benchOut.empty()) {
-        std::fputs(json.c_str(), stdout);
-        std::fputs(table.c_str(), stderr);
-        return {};
-    }
-    std::ofstream out(options.benchOut, std::ios::binary | std::ios::trunc);
-    if (!(out << json) || !out.flush()) return fail("--out ", options.benchOut, ": cannot write the file");
-    std::fputs(table.c_str(), stdout);
-    std::fflush(stdout); // before the log line on stderr
-    log::info("wrote " + options.benchOut);
-    return {};
+    return writeBenchOutputs(options, json, table);
 }
 
 } // namespace
@@ -142,9 +126,9 @@ Status runCharacterBenchmark(const DemoOptions& options) {
     summary.sharedLevel = shared;
     summary.tableLevel = shared;
     if (requested > shared)
-        summary.notes.push_back("every backend draws at level " + levelText(shared) +
+        summary.notes.push_back("every backend draws at level " + formatNumber(shared) +
                                 ", the emulated tessellator's maximum; backends that tessellate further also at " +
-                                levelText(requested));
+                                formatNumber(requested));
 
     const std::filesystem::path traceDir = benchTraceDirectory(options);
     if (!traceDir.empty()) {
@@ -169,8 +153,8 @@ Status runCharacterBenchmark(const DemoOptions& options) {
         const auto& caps = session.capabilities();
         const float top = session.maxCharacterLevel();
         if (!compare && options.characterLevel && *options.characterLevel > top)
-            return fail("--character-level ", levelText(*options.characterLevel), ": backend ", caps.name,
-                        " tessellates up to level ", levelText(top));
+            return fail("--character-level ", formatNumber(*options.characterLevel), ": backend ", caps.name,
+                        " tessellates up to level ", formatNumber(top));
         std::vector<float> levels = {std::min(shared, top)};
         if (requested > levels.front() && requested <= top) levels.push_back(requested);
         session.setTerrainVisible(options.terrain);
@@ -211,10 +195,10 @@ Status runCharacterBenchmark(const DemoOptions& options) {
                 summarizeRow(profiler, first + summary.warmupFrames, frameIndex, path, row);
                 summary.crowdMembers = std::max(summary.crowdMembers, row.charactersDrawn);
                 // One slice per row on the CPU track, so the trace reads as the table's rows.
-                const std::string label = row.path + " level " + levelText(level);
+                const std::string label = row.path + " level " + formatNumber(level);
                 profiler.recordCpu({internBenchName(label), profiler::Profiler::currentThreadId(), first, rowStartNs,
                                     profiler.nowNs() - rowStartNs, 0});
-                log::info(row.backend + " " + row.path + " level " + levelText(level) + ": " +
+                log::info(row.backend + " " + row.path + " level " + formatNumber(level) + ": " +
                           std::to_string(row.characterMsMedian) + " ms, " + std::to_string(row.triangles) +
                           " triangles");
             }

@@ -18,12 +18,6 @@ namespace {
 
 constexpr uint32_t kDefaultHeadlessFrames = 60;
 
-// A level as a user writes it: "14.99", "20".
-std::string formatNumber(float value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", double(value));
-    return text;
-}
 
 Status runFlythrough(const DemoOptions& options) {
     auto& profiler = profiler::Profiler::global();

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace tessera::demo {
@@ -30,12 +31,6 @@ Result<glm::vec3> parseColor(const std::string& text) {
     }
     if (n != 3) return fail("--clear-color expects r,g,b with each in [0,1], got \"", text, "\"");
     return color;
-}
-
-std::string formatNumber(float v) {
-    std::ostringstream text;
-    text << v;
-    return text.str();
 }
 
 Result<float> parseNumber(const std::string& flag, const std::string& text, float min, float max) {
@@ -69,6 +64,12 @@ Result<terrain::CraterSplat> parseSplat(const std::string& text) {
 }
 
 } // namespace
+
+std::string formatNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
 
 const char* helpText() {
     return R"(usage: tessera-demo [options]

@@ -81,6 +81,10 @@ struct DemoOptions {
 /// Parses argv (without argv[0]).
 Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args);
 
+/// A number as a user writes it on the command line ("14.99", "20"), for
+/// messages about flags.
+std::string formatNumber(double value);
+
 /// The --help text.
 const char* helpText();
 

@@ -9,17 +9,6 @@
 #include <sstream>
 
 namespace tessera::demo {
-namespace {
-
-// A level as a user would write it: "14.99", "64".
-std::string formatLevel(float level) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", double(level));
-    return text;
-}
-
-} // namespace
-
 
 Result<std::unique_ptr<RenderSession>> RenderSession::create(const DemoOptions& options, terrain::Terrain& terrain) {
     std::unique_ptr<RenderSession> session(new RenderSession());
@@ -101,13 +90,13 @@ Result<terrain::TessellationSettings> RenderSession::resolveTessellation(const D
     // A level the user asked for and the backend cannot draw is an error;
     // the defaults (64, 15) are clamped to the backend's maximum instead, as
     // D3D10-era hardware clamps to 14.99.
-    const std::string top = formatLevel(caps.maxTessFactor);
+    const std::string top = formatNumber(caps.maxTessFactor);
     if (options.tessMaxGiven && settings.maxLevel > caps.maxTessFactor)
-        return fail("--tess-max ", formatLevel(settings.maxLevel), ": backend ", caps.name, " tessellates up to level ",
+        return fail("--tess-max ", formatNumber(settings.maxLevel), ": backend ", caps.name, " tessellates up to level ",
                     top);
     if (settings.mode == terrain::TerrainMode::Continuous && options.tessLevelGiven &&
         settings.continuousLevel > caps.maxTessFactor)
-        return fail("--tess-level ", formatLevel(settings.continuousLevel), ": backend ", caps.name,
+        return fail("--tess-level ", formatNumber(settings.continuousLevel), ": backend ", caps.name,
                     " tessellates up to level ", top);
     settings.maxLevel = std::min(settings.maxLevel, caps.maxTessFactor);
     settings.continuousLevel = std::min(settings.continuousLevel, caps.maxTessFactor);

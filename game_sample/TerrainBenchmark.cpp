@@ -2,7 +2,7 @@
 
 #include "BackendSelection.h"
 #include "DemoScene.h"
-#include "BenchTrace.h"
+#include "BenchOutputs.h"
 #include "RenderSession.h"
 #include "TerrainBenchReport.h"
 #include "tessera/core/Log.h"
@@ -274,17 +274,7 @@ Status runTerrainBenchmark(const DemoOptions& options) {
     const std::string json = terrainBenchJson(records);
     std::string table = terrainBenchTable(records);
     if (compare) table += backendComparisonTable(records, notes);
-    if (options.benchOut.empty()) {
-        std::fputs(json.c_str(), stdout);
-        std::fputs(table.c_str(), stderr);
-        return {};
-    }
-    std::ofstream out(options.benchOut, std::ios::binary | std::ios::trunc);
-    if (!(out << json) || !out.flush()) return fail("--out ", options.benchOut, ": cannot write the file");
-    std::fputs(table.c_str(), stdout);
-    std::fflush(stdout); // before the log line on stderr
-    log::info("wrote " + options.benchOut);
-    return {};
+    return writeBenchOutputs(options, json, table);
 }
 
 } // namespace tessera::demo

@@ -1,11 +1,27 @@
-#include "BenchTrace.h"
+#include "BenchOutputs.h"
 
 #include "tessera/core/Log.h"
 #include "tessera/profiler/TraceWriter.h"
 
+#include <cstdio>
+#include <fstream>
 #include <set>
 
 namespace tessera::demo {
+
+Status writeBenchOutputs(const DemoOptions& options, const std::string& json, const std::string& table) {
+    if (options.benchOut.empty()) {
+        std::fputs(json.c_str(), stdout);
+        std::fputs(table.c_str(), stderr);
+        return {};
+    }
+    std::ofstream out(options.benchOut, std::ios::binary | std::ios::trunc);
+    if (!(out << json) || !out.flush()) return fail("--out ", options.benchOut, ": cannot write the file");
+    std::fputs(table.c_str(), stdout);
+    std::fflush(stdout); // before the log line on stderr
+    log::info("wrote " + options.benchOut);
+    return {};
+}
 
 std::filesystem::path benchTraceDirectory(const DemoOptions& options) {
     if (!options.benchOutDir.empty()) return options.benchOutDir;

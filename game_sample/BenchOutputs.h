@@ -1,8 +1,9 @@
 #pragma once
-/// @file BenchTrace.h
+/// @file BenchOutputs.h
 /// What the benchmarks (--bench terrain, --bench characters) share about
-/// their per-backend Chrome traces: where they go, the names of their row
-/// slices, and writing one with the session's device in its metadata.
+/// their outputs: the JSON and the table (--out, or stdout and stderr), and
+/// the per-backend Chrome traces (where they go, the names of their row
+/// slices, the session's device in their metadata).
 
 #include "DemoOptions.h"
 #include "RenderSession.h"
@@ -13,6 +14,11 @@
 #include <string>
 
 namespace tessera::demo {
+
+/// Writes the benchmark's `json` to --out and its `table` to stdout, or,
+/// without --out, the JSON to stdout and the table to stderr (so stdout
+/// stays clean JSON). An --out that cannot be written is an error naming it.
+Status writeBenchOutputs(const DemoOptions& options, const std::string& json, const std::string& table);
 
 /// Where the per-backend traces go ("" for none): --out-dir, else with
 /// --backend all next to --out or in the current directory.
