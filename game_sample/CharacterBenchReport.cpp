@@ -32,6 +32,13 @@ void fixed(JsonWriter& json, const char* key, double value, int decimals) {
     json.valueFixed(value, decimals);
 }
 
+// The keys every per-asset object starts with.
+void writeAssetCage(JsonWriter& json, const CharacterAssetFigures& a) {
+    json.keyValue("asset", a.name);
+    json.keyValue("cage_vertices", a.cageVertices);
+    json.keyValue("cage_triangles", a.cageTriangles);
+}
+
 void writeRow(JsonWriter& json, const CharacterBenchRow& r, const std::vector<CharacterBenchRow>& rows) {
     json.beginObject();
     json.keyValue("backend", r.backend);
@@ -79,9 +86,7 @@ void writeAmplification(JsonWriter& json, const CharacterBenchSummary& s) {
     json.beginArray();
     for (const auto& a : s.assets) {
         json.beginObject();
-        json.keyValue("asset", a.name);
-        json.keyValue("cage_vertices", a.cageVertices);
-        json.keyValue("cage_triangles", a.cageTriangles);
+        writeAssetCage(json, a);
         json.keyValue("triangles_per_cage_triangle", a.trianglesPerCageTriangle);
         json.keyValue("triangles_at_shared_level", a.tessellatedTriangles);
         json.keyValue("triangles_at_paper_level", a.paperLevelTriangles);
@@ -107,9 +112,7 @@ void writeTable1(JsonWriter& json, const CharacterBenchSummary& s) {
     json.beginArray();
     for (const auto& a : s.assets) {
         json.beginObject();
-        json.keyValue("asset", a.name);
-        json.keyValue("cage_vertices", a.cageVertices);
-        json.keyValue("cage_triangles", a.cageTriangles);
+        writeAssetCage(json, a);
         json.keyValue("cage_bytes", a.cageBytes);
         json.keyValue("compressed_cage_bytes", a.compressedCageBytes);
         json.keyValue("displacement_map_width", a.displacementWidth);
