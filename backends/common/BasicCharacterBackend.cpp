@@ -1,5 +1,6 @@
 #include "BasicCharacterBackend.h"
 
+#include "CommandHelpers.h"
 #include "FrameUniforms.h"
 #include "tessera/character/CharacterAsset.h"
 #include "tessera/gpu/FrameContext.h"
@@ -132,24 +133,9 @@ void BasicCharacterBackend::pushCharacterDescriptors(VkPipelineBindPoint bindPoi
     const uint32_t imageBindings[3] = {TS_BINDING_BASE_COLOR, TS_BINDING_NORMAL_MAP, TS_BINDING_DISPLACEMENT};
     std::vector<VkWriteDescriptorSet> writes;
     writes.reserve(6 + extra.size());
-    for (int i = 0; i < 3; ++i) {
-        VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        w.dstBinding = bufferBindings[i];
-        w.descriptorCount = 1;
-        w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-        w.pBufferInfo = &buffers[i];
-        writes.push_back(w);
-    }
-    if (bindings == CharacterBindings::Draw) {
-        for (int i = 0; i < 3; ++i) {
-            VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-            w.dstBinding = imageBindings[i];
-            w.descriptorCount = 1;
-            w.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-            w.pImageInfo = &images[i];
-            writes.push_back(w);
-        }
-    }
+    for (int i = 0; i < 3; ++i) writes.push_back(bufferWrite(bufferBindings[i], VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &buffers[i]));
+    if (bindings == CharacterBindings::Draw)
+        for (int i = 0; i < 3; ++i) writes.push_back(imageWrite(imageBindings[i], &images[i]));
     writes.insert(writes.end(), extra.begin(), extra.end());
     mDevice->fn().cmdPushDescriptorSet(mFrame->cmd(), bindPoint, layout.handle(), 0,
                                        static_cast<uint32_t>(writes.size()), writes.data());

@@ -1,7 +1,7 @@
 #pragma once
 /// @file CommandHelpers.h
 /// Small recording helpers every GPU backend's passes share: push-descriptor
-/// writes of one resource and a global synchronization2 memory barrier.
+/// writes of one resource. (Barriers come from the shared layer, Barriers.h.)
 
 #include <vulkan/vulkan.h>
 
@@ -13,8 +13,7 @@ namespace tessera::backends {
 VkWriteDescriptorSet bufferWrite(uint32_t binding, VkDescriptorType type, const VkDescriptorBufferInfo* info);
 /// A push-descriptor write of one uniform texel buffer view.
 VkWriteDescriptorSet texelWrite(uint32_t binding, const VkBufferView* view);
-/// A global memory barrier.
-void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
-                   VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess);
+/// A push-descriptor write of one combined image sampler.
+VkWriteDescriptorSet imageWrite(uint32_t binding, const VkDescriptorImageInfo* info);
 
 } // namespace tessera::backends

@@ -1,5 +1,7 @@
 #include "CharacterSkinPass.h"
 
+#include "tessera/gpu/Barriers.h"
+
 #include "CommandHelpers.h"
 #include "FrameUniforms.h"
 #include "tessera/gpu/FrameContext.h"
@@ -26,8 +28,8 @@ void CharacterSkinPass::record(gpu::FrameContext& frame, const CharacterInstance
                                             bufferWrite(TS_BINDING_COMPRESSED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &out)};
     push(VK_PIPELINE_BIND_POINT_COMPUTE, CharacterBindings::Skin, mLayout, instance, writes);
     vkCmdDispatch(cmd, (c.vertexCount() + 63) / 64, 1, 1);
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
 
 } // namespace tessera::backends

@@ -1,5 +1,7 @@
 #include "TessFactorPass.h"
 
+#include "tessera/gpu/Barriers.h"
+
 #include "CommandHelpers.h"
 
 #include "FrameUniforms.h"
@@ -8,19 +10,6 @@
 #include "terrain_factors.comp.spv.h"
 
 namespace tessera::backends {
-
-namespace {
-
-VkWriteDescriptorSet storageWrite(uint32_t binding, const VkDescriptorBufferInfo* info) {
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstBinding = binding;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    write.pBufferInfo = info;
-    return write;
-}
-
-} // namespace
 
 TessFactorPass::TessFactorPass(gpu::Device& device, const std::string& backendName) {
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -48,17 +37,18 @@ void TessFactorPass::record(gpu::FrameContext& frame, GpuTerrain& terrain, const
     const VkDescriptorBufferInfo patchErrors{terrain.patchErrors(slot).handle(), 0, VK_WHOLE_SIZE};
     const VkDescriptorBufferInfo edgeLevels{terrain.edgeLevels(slot).handle(), 0, VK_WHOLE_SIZE};
     const VkDescriptorBufferInfo patchLevels{terrain.patchLevels(slot).handle(), 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet writes[5] = {storageWrite(TS_BINDING_TESS, &tess), storageWrite(TS_BINDING_EDGE_ERROR, &edgeErrors),
-                                      storageWrite(TS_BINDING_PATCH_ERROR, &patchErrors),
-                                      storageWrite(TS_BINDING_EDGE_LEVELS, &edgeLevels),
-                                      storageWrite(TS_BINDING_PATCH_LEVELS, &patchLevels)};
-    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    VkWriteDescriptorSet writes[5] = {bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess),
+                                      bufferWrite(TS_BINDING_EDGE_ERROR, storage, &edgeErrors),
+                                      bufferWrite(TS_BINDING_PATCH_ERROR, storage, &patchErrors),
+                                      bufferWrite(TS_BINDING_EDGE_LEVELS, storage, &edgeLevels),
+                                      bufferWrite(TS_BINDING_PATCH_LEVELS, storage, &patchLevels)};
     pushBindings(VK_PIPELINE_BIND_POINT_COMPUTE, mLayout, terrain, writes);
     const uint32_t invocations = terrain.edgeCount() + terrain.patchCount();
     vkCmdDispatch(cmd, (invocations + 63) / 64, 1, 1);
 
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
 
 } // namespace tessera::backends

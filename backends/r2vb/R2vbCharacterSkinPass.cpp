@@ -1,5 +1,7 @@
 #include "R2vbCharacterSkinPass.h"
 
+#include "tessera/gpu/Barriers.h"
+
 #include "FrameUniforms.h"
 #include "R2vbRecording.h"
 #include "shaders/R2vbLayout.h"
@@ -81,8 +83,8 @@ void R2vbCharacterSkinPass::record(gpu::FrameContext& frame, const CharacterInst
                            VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
     r2vb::barriers(cmd, {&toCopy, 1});
     r2vb::copyRows(cmd, target, rows, instance.compressed->buffer, 0);
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 }
 
 } // namespace tessera::backends

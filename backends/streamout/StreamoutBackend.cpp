@@ -7,6 +7,8 @@
 //   streamout.factors  draw-auto over the survivors: levels and tessellator commands, streamed out
 // then EmulatedTerrainBackend draws the pattern pieces with one indirect draw.
 #include "EmulatedTerrainBackend.h"
+
+#include "tessera/gpu/Barriers.h"
 #include "StreamoutBuffers.h"
 #include "StreamoutCagePass.h"
 #include "StreamoutCharacterSkinPass.h"
@@ -63,7 +65,7 @@ protected:
         // A terrain drawn earlier in this frame may still be reading these
         // buffers (its emulated draw, its passes): finish that before they
         // are cleared and streamed into again.
-        memoryBarrier(
+        gpu::memoryBarrier(
             mFrame->cmd(),
             VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT |
                 VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT |

@@ -1,5 +1,7 @@
 #include "StreamoutCagePass.h"
 
+#include "tessera/gpu/Barriers.h"
+
 #include "FrameUniforms.h"
 #include "StreamoutRecording.h"
 #include "TerrainUniforms.h"
@@ -52,10 +54,10 @@ void StreamoutCagePass::record(const StreamoutPassInputs& in) {
     fn.cmdEndTransformFeedback(cmd, 0, 0, nullptr, nullptr);
     streamout::endStreamOut(cmd);
 
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
-                             VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT,
-                             VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT,
-                             VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
+                       VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT,
+                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT,
+                       VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 }
 
 } // namespace tessera::backends

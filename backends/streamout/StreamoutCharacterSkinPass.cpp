@@ -1,5 +1,7 @@
 #include "StreamoutCharacterSkinPass.h"
 
+#include "tessera/gpu/Barriers.h"
+
 #include "FrameUniforms.h"
 #include "StreamoutRecording.h"
 #include "tessera/gpu/Device.h"
@@ -49,8 +51,8 @@ void StreamoutCharacterSkinPass::record(gpu::FrameContext& frame, const Characte
     vkCmdDraw(cmd, c.vertexCount(), 1, 0, 0);
     fn.cmdEndTransformFeedback(cmd, 0, 0, nullptr, nullptr);
     streamout::endStreamOut(cmd);
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT, VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT,
-                  VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT, VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT,
+                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 }
 
 } // namespace tessera::backends

@@ -1,5 +1,7 @@
 #include "StreamoutCullPass.h"
 
+#include "tessera/gpu/Barriers.h"
+
 #include "FrameUniforms.h"
 #include "StreamoutRecording.h"
 #include "TerrainUniforms.h"
@@ -58,12 +60,12 @@ void StreamoutCullPass::record(const StreamoutPassInputs& in, std::span<const ui
     fn.cmdEndTransformFeedback(cmd, 0, 1, &counter, &zero);
     streamout::endStreamOut(cmd);
 
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
-                             VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT |
-                                 VK_ACCESS_2_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT,
-                             VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
-                             VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT |
-                                 VK_ACCESS_2_TRANSFORM_FEEDBACK_COUNTER_READ_BIT_EXT);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
+                       VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT |
+                       VK_ACCESS_2_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT,
+                       VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT | VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                       VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT |
+                       VK_ACCESS_2_TRANSFORM_FEEDBACK_COUNTER_READ_BIT_EXT);
 }
 
 } // namespace tessera::backends

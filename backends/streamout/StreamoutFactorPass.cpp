@@ -1,5 +1,7 @@
 #include "StreamoutFactorPass.h"
 
+#include "tessera/gpu/Barriers.h"
+
 #include "FrameUniforms.h"
 #include "StreamoutRecording.h"
 #include "TerrainUniforms.h"
@@ -77,9 +79,9 @@ void StreamoutFactorPass::record(const StreamoutPassInputs& in, const gpu::Buffe
     // Commands past the survivors must draw nothing; stream output writes
     // only the survivors' records.
     vkCmdFillBuffer(cmd, buffers.commands.handle(), 0, VK_WHOLE_SIZE, 0);
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                             VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
-                             VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
+                       VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT);
 
     streamout::beginStreamOut(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
@@ -113,10 +115,10 @@ void StreamoutFactorPass::record(const StreamoutPassInputs& in, const gpu::Buffe
     streamout::endStreamOut(cmd);
 
     // The clear too: the commands past the survivors keep its zeros.
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
-                             VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                             VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
-                             VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                       VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT | VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
+                       VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 }
 
 } // namespace tessera::backends

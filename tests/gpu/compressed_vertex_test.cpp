@@ -4,6 +4,7 @@
 // within one code where a float rounding tie lands differently (counted and
 // bounded), and the decoded values within 1e-5.
 #include "CompressedVertexTestLayout.h"
+#include "tessera/gpu/Barriers.h"
 #include "GpuTestDevice.h"
 
 #include "tessera/core/Random.h"
@@ -121,15 +122,8 @@ std::vector<TsCvTestOutput> runShader(gpu::Device& device, const TsCvTestParams&
             device.fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout.handle(), 0, 2, writes);
             vkCmdPushConstants(cmd, layout.handle(), compute, 0, sizeof params, &params);
             vkCmdDispatch(cmd, (params.count.x + 63) / 64, 1, 1);
-            VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-            barrier.srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
-            barrier.srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
-            barrier.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-            barrier.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-            VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-            dependency.memoryBarrierCount = 1;
-            dependency.pMemoryBarriers = &barrier;
-            vkCmdPipelineBarrier2(cmd, &dependency);
+            tessera::gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                                        VK_ACCESS_2_HOST_READ_BIT);
         },
         "compressedVertexTest");
     const auto* mapped = static_cast<const TsCvTestOutput*>(out.mapped());

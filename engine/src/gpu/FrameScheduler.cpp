@@ -1,5 +1,7 @@
 #include "tessera/gpu/FrameScheduler.h"
 
+#include "tessera/gpu/Barriers.h"
+
 #include "tessera/gpu/Device.h"
 #include "tessera/gpu/RenderTarget.h"
 #include "tessera/gpu/Swapchain.h"
@@ -87,15 +89,8 @@ void FrameScheduler::endFrame(bool readback, Swapchain* swapchain) {
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         region.imageExtent = {color.width(), color.height(), 1};
         vkCmdCopyImageToBuffer(cmd, color.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, mReadback.handle(), 1, &region);
-        VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        toHost.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-        toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-        toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-        toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.memoryBarrierCount = 1;
-        dep.pMemoryBarriers = &toHost;
-        vkCmdPipelineBarrier2(cmd, &dep);
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_HOST_BIT,
+                      VK_ACCESS_2_HOST_READ_BIT);
         // Leave the image as the non-readback path does, so a following blit sees one layout.
         transitionImage(cmd, color.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                         RenderTarget::kColorLayoutAfterPasses, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,

@@ -1,4 +1,5 @@
 #include "TessellationCapture.h"
+#include "tessera/gpu/Barriers.h"
 
 #include "tessera/gpu/VulkanCheck.h"
 
@@ -105,16 +106,10 @@ Result<TessellationCaptureResult> TessellationCapture::run(CaptureDomain domain,
             vkCmdEndQuery(cmd, mStreamQueries, 0);
             vkCmdEndQuery(cmd, mStatsQueries, 0);
             vkCmdEndRendering(cmd);
-            VkMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-            barrier.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT;
-            barrier.srcAccessMask =
-                VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT | VK_ACCESS_2_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT;
-            barrier.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT;
-            barrier.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
-            VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-            dependency.memoryBarrierCount = 1;
-            dependency.pMemoryBarriers = &barrier;
-            vkCmdPipelineBarrier2(cmd, &dependency);
+            tessera::gpu::memoryBarrier(
+                cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
+                VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT | VK_ACCESS_2_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT,
+                VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
         },
         "tessCapture");
 
