@@ -1,14 +1,13 @@
 #include "tessera/terrain/HeightMapGenerator.h"
 
 #include "HydraulicErosion.h"
-#include "ParallelFor.h"
+#include "tessera/core/ParallelFor.h"
 #include "TerrainNoise.h"
 #include "ThermalErosion.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <thread>
 
 namespace tessera::terrain {
 namespace {
@@ -59,7 +58,7 @@ void generateNoise(std::vector<float>& heights, uint32_t size, uint64_t seed, fl
     const TerrainNoise noise(seed ^ kNoiseSalt);
     const uint32_t items = size / kRowsPerItem;
     const float inverse = 1.0f / float(size);
-    parallelFor(
+    core::parallelFor(
         items, threads,
         [&](uint32_t item) {
             for (uint32_t y = item * kRowsPerItem; y < (item + 1) * kRowsPerItem; ++y)
@@ -92,7 +91,7 @@ void erodeCoarse(std::vector<float>& heights, uint32_t size, uint32_t factor, ui
 
     const float step = 1.0f / float(factor);
     const float last = float(coarseSize - 1);
-    parallelFor(size / kRowsPerItem, threads, [&](uint32_t item) {
+    core::parallelFor(size / kRowsPerItem, threads, [&](uint32_t item) {
         for (uint32_t y = item * kRowsPerItem; y < (item + 1) * kRowsPerItem; ++y) {
             // Fine sample centres in coarse sample coordinates.
             float fy = std::clamp((float(y) + 0.5f) * step - 0.5f, 0.0f, last);
@@ -132,7 +131,7 @@ std::vector<uint16_t> generateHeightMap(const HeightMapGeneratorSettings& settin
     assert(size >= kMinGeneratedSize && size <= kMaxGeneratedSize && (size & (size - 1)) == 0);
     const uint32_t threads = settings.threadCount != 0
                                  ? settings.threadCount
-                                 : std::max(1u, std::thread::hardware_concurrency());
+                                 : core::hardwareThreads();
     const uint32_t droplets = settings.erosionDroplets.value_or(defaultErosionDroplets(size));
 
     // Progress plumbing: each stage maps its own 0..1 onto its share of the whole.

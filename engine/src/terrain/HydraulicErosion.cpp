@@ -1,6 +1,6 @@
 #include "HydraulicErosion.h"
 
-#include "ParallelFor.h"
+#include "tessera/core/ParallelFor.h"
 #include "tessera/core/Random.h"
 
 #include <algorithm>
@@ -187,7 +187,7 @@ void erodeHydraulic(std::vector<float>& heights, uint32_t size, uint32_t droplet
                 }
             };
             const uint32_t before = itemsDone;
-            parallelFor(uint32_t(tiles.size()), threadCount, runTile, [&](uint32_t done) {
+            core::parallelFor(uint32_t(tiles.size()), threadCount, runTile, [&](uint32_t done) {
                 if (onProgress) onProgress(float(before + done) / float(itemCount));
             });
             itemsDone += uint32_t(tiles.size());

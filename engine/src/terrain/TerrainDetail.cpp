@@ -1,10 +1,9 @@
 #include "tessera/terrain/TerrainDetail.h"
 
-#include "ParallelFor.h"
+#include "tessera/core/ParallelFor.h"
 
 #include <algorithm>
 #include <cmath>
-#include <thread>
 
 namespace tessera::terrain {
 namespace {
@@ -23,9 +22,8 @@ TerrainDetail::TerrainDetail(const HeightField& field, const PatchGrid& grid)
     // tens of milliseconds), so it is spread over the cores. Every index writes
     // only its own entry and reads only the field, so the result does not
     // depend on the thread count.
-    const uint32_t threads = std::max(1u, std::thread::hardware_concurrency());
-    parallelFor(grid.edgeCount(), threads, [&](uint32_t e) { mEdgeError[e] = computeEdge(e); });
-    parallelFor(grid.patchCount(), threads, [&](uint32_t p) { mPatchError[p] = computePatch(p); });
+    core::parallelFor(grid.edgeCount(), 0, [&](uint32_t e) { mEdgeError[e] = computeEdge(e); });
+    core::parallelFor(grid.patchCount(), 0, [&](uint32_t p) { mPatchError[p] = computePatch(p); });
 }
 
 void TerrainDetail::update(const SampleRect& patches) {

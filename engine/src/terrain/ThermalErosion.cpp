@@ -1,6 +1,6 @@
 #include "ThermalErosion.h"
 
-#include "ParallelFor.h"
+#include "tessera/core/ParallelFor.h"
 
 #include <algorithm>
 #include <cassert>
@@ -84,7 +84,7 @@ void erodeThermal(std::vector<float>& heights, uint32_t size, uint32_t iteration
     for (uint32_t pass = 0; pass < iterations; ++pass) {
         const float* in = heights.data();
         float* out = scratch.data();
-        parallelFor(items, threadCount, [&](uint32_t item) {
+        core::parallelFor(items, threadCount, [&](uint32_t item) {
             uint32_t begin = item * kRowsPerItem;
             relaxRows(in, out, size, begin, std::min(size, begin + kRowsPerItem), talusSlope);
         });

@@ -1,9 +1,9 @@
 #include "BakeRayCaster.h"
 
+#include "tessera/core/ParallelFor.h"
+
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <thread>
 
 namespace tessera::creature {
 
@@ -119,19 +119,14 @@ BakedTexels castTexelRays(const character::CageMesh& cage, const UvRasterizer& r
     out.state.assign(count, TexelState::Unbaked);
     TexelContext context{cage, raster, bvh, sculpt, sculptNormals, inner, outer, out};
 
-    std::atomic<uint32_t> nextRow{0};
-    std::atomic<uint32_t> rowsDone{0};
-    auto work = [&](bool reportProgress) {
-        for (uint32_t row = nextRow++; row < size; row = nextRow++) {
+    core::parallelFor(
+        size, threads,
+        [&](uint32_t row) {
             for (uint32_t x = 0; x < size; ++x) bakeTexel(context, row * size + x);
-            uint32_t done = ++rowsDone;
-            if (reportProgress && progress) progress(static_cast<float>(done) / static_cast<float>(size));
-        }
-    };
-    std::vector<std::thread> workers;
-    for (uint32_t i = 1; i < std::max(1u, threads); ++i) workers.emplace_back(work, false);
-    work(true);
-    for (std::thread& worker : workers) worker.join();
+        },
+        [&](uint32_t rowsDone) {
+            if (progress) progress(static_cast<float>(rowsDone) / static_cast<float>(size));
+        });
     // After all rows: each extrapolation only reads and writes its own texel.
     for (const DilatedTexel& d : raster.dilatedTexels()) extrapolateTexel(context, d);
 

@@ -1,6 +1,6 @@
 #include "CreatureSculpt.h"
 
-#include "ParallelFor.h"
+#include "tessera/core/ParallelFor.h"
 
 #include <algorithm>
 #include <unordered_map>
@@ -46,7 +46,8 @@ SculptMesh makeSculpt(const IndexedMesh& cage, const CreatureSdf& sdf, const Ski
     const size_t blocks = 8;
     for (size_t b = 0; b < blocks; ++b) {
         size_t first = n * b / blocks, last = n * (b + 1) / blocks;
-        parallelFor(last - first, [&](size_t begin, size_t end) {
+        core::parallelForRanges(uint32_t(last - first), 256, 0, [&](core::IndexRange range) {
+        const size_t begin = range.begin, end = range.end;
             for (size_t i = first + begin; i < first + end; ++i) {
                 glm::vec3 normal;
                 // The planar cage is within a couple of centimetres of the

@@ -1,6 +1,6 @@
 #include "CreatureTexture.h"
 
-#include "ParallelFor.h"
+#include "tessera/core/ParallelFor.h"
 #include "SdfNoise.h"
 
 #include <algorithm>
@@ -62,7 +62,8 @@ character::TextureImage paintBaseColor(const character::CageMesh& cage, const Cr
     }
 
     std::vector<glm::vec3> colour(texels, glm::vec3(0.0f));
-    parallelFor(texels, [&](size_t begin, size_t end) {
+    core::parallelForRanges(uint32_t(texels), 256, 0, [&](core::IndexRange range) {
+        const size_t begin = range.begin, end = range.end;
         for (size_t i = begin; i < end; ++i) {
             if (!covered[i]) continue;
             glm::vec3 p = sdf.project(where[i], 1, 0.04f, nullptr);

@@ -10,7 +10,6 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include <thread>
 
 namespace tessera::creature {
 
@@ -144,7 +143,7 @@ Result<BakeResult> bakeDisplacement(const character::CageMesh& cage, const Sculp
     };
     const uint32_t size = options.resolution;
     const uint32_t normalSize = options.normalResolution ? options.normalResolution : size;
-    const uint32_t threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    const uint32_t threads = options.threads; // 0: every hardware thread (core::parallelFor)
     report(0.0f);
     const Bvh bvh(sculpt.positions, sculpt.indices);
     const std::vector<glm::vec3> sculptNormals = sculptVertexNormals(sculpt);

@@ -1,6 +1,6 @@
 #include "MarchingTetrahedra.h"
 
-#include "ParallelFor.h"
+#include "tessera/core/ParallelFor.h"
 
 #include <algorithm>
 #include <array>
@@ -39,7 +39,8 @@ IndexedMesh marchTetrahedra(const std::function<float(const glm::vec3&)>& field,
     // Coarse pass: which blocks can hold surface at all.
     Grid cg{cells.x / kBlock + 2, cells.y / kBlock + 2, cells.z / kBlock + 2};
     std::vector<float> coarse(cg.index(0, 0, cg.nz));
-    parallelFor(coarse.size(), [&](size_t begin, size_t end) {
+    core::parallelForRanges(uint32_t(coarse.size()), 256, 0, [&](core::IndexRange range) {
+        const size_t begin = range.begin, end = range.end;
         for (size_t i = begin; i < end; ++i) {
             int x = static_cast<int>(i % static_cast<size_t>(cg.nx));
             int y = static_cast<int>((i / static_cast<size_t>(cg.nx)) % static_cast<size_t>(cg.ny));
@@ -62,7 +63,8 @@ IndexedMesh marchTetrahedra(const std::function<float(const glm::vec3&)>& field,
 
     std::vector<float> values(g.index(0, 0, g.nz));
     size_t rows = static_cast<size_t>(g.ny) * static_cast<size_t>(g.nz);
-    parallelFor(rows, [&](size_t begin, size_t end) {
+    core::parallelForRanges(uint32_t(rows), 1, 0, [&](core::IndexRange range) {
+        const size_t begin = range.begin, end = range.end;
         for (size_t r = begin; r < end; ++r) {
             int y = static_cast<int>(r % static_cast<size_t>(g.ny)), z = static_cast<int>(r / static_cast<size_t>(g.ny));
             for (int x = 0; x < g.nx; ++x) {

@@ -1,6 +1,6 @@
 #include "SkinWeights.h"
 
-#include "ParallelFor.h"
+#include "tessera/core/ParallelFor.h"
 
 #include <algorithm>
 #include <array>
@@ -44,7 +44,8 @@ VertexWeights weigh(const CreatureSdf& sdf, const glm::vec3& p) {
 
 std::vector<VertexWeights> computeSkinWeights(const CreatureSdf& sdf, const std::vector<glm::vec3>& positions) {
     std::vector<VertexWeights> result(positions.size());
-    parallelFor(positions.size(), [&](size_t begin, size_t end) {
+    core::parallelForRanges(uint32_t(positions.size()), 256, 0, [&](core::IndexRange range) {
+        const size_t begin = range.begin, end = range.end;
         for (size_t i = begin; i < end; ++i) result[i] = weigh(sdf, positions[i]);
     });
     return result;
