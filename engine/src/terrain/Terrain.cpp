@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cassert>
-#include <utility>
 
 namespace tessera::terrain {
 namespace {
@@ -87,11 +86,15 @@ SampleRect Terrain::splat(const CraterSplat& crater) {
     const SampleRect patches = mGrid->patchesTouching(samples);
     mBounds->update(patches);
     mDetail->update(patches);
-    mPending.push_back(crater);
+    mHistory.push_back(crater);
     ++mRevision;
     return samples;
 }
 
-std::vector<CraterSplat> Terrain::takePendingSplats() { return std::exchange(mPending, {}); }
+std::vector<CraterSplat> Terrain::takePendingSplats() {
+    std::vector<CraterSplat> pending(mHistory.begin() + std::ptrdiff_t(mPendingFrom), mHistory.end());
+    mPendingFrom = mHistory.size();
+    return pending;
+}
 
 } // namespace tessera::terrain

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace tessera::terrain {
@@ -61,6 +62,11 @@ public:
     /// errors) when it changes.
     uint64_t revision() const { return mRevision; }
 
+    /// Every splat since construction, in order (revision() of them), for
+    /// systems that react to deformation on their own schedule (the crowd
+    /// reads the ones it has not seen at its next step).
+    std::span<const CraterSplat> splatHistory() const { return mHistory; }
+
 private:
     void cullCell(const scene::Frustum& frustum, const glm::vec3& eye, uint32_t level, uint32_t x, uint32_t z,
                   bool inside, std::vector<uint32_t>& visible) const;
@@ -70,7 +76,8 @@ private:
     std::unique_ptr<PatchGrid> mGrid;
     std::unique_ptr<MinMaxPyramid> mBounds;
     std::unique_ptr<TerrainDetail> mDetail;
-    std::vector<CraterSplat> mPending;
+    std::vector<CraterSplat> mHistory;
+    size_t mPendingFrom = 0; ///< first splat takePendingSplats() has not handed out
     uint64_t mRevision = 0;
 };
 

@@ -1,0 +1,120 @@
+#pragma once
+// Internal: the cost per metre of walking over every navigation cell that the
+// potential fields are solved over: the ground (slope), fresh craters, and
+// the crowd itself, which costs more to walk against than with.
+
+#include "tessera/crowd/CrowdSettings.h"
+#include "tessera/crowd/NavGrid.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace tessera::crowd {
+
+/// A fresh crater: impassable until `expires` (crowd seconds).
+struct Hazard {
+    glm::vec2 center{0.0f};
+    float radius = 0.0f;
+    double expires = 0.0;
+};
+
+/// What a cost update changed, for the fields: cells that became impassable
+/// or much dearer (their dependents are reset) and tiles with any change
+/// (re-solved).
+struct CostChanges {
+    std::vector<uint32_t> raised;
+    std::vector<uint32_t> tiles;
+    bool empty() const { return tiles.empty(); }
+};
+
+/// Directions of travel out of a cell, in this order.
+enum Direction { kMinusX = 0, kPlusX = 1, kMinusZ = 2, kPlusZ = 3 };
+
+/// Directed costs of one tile's cells: [cell][direction], cells row by row
+/// (NavGrid::kTileCells wide, clipped tiles included).
+using DirectedCosts = std::array<std::array<float, 4>, NavGrid::kTileCells * NavGrid::kTileCells>;
+
+/// Two layers:
+///  - ground: the terrain cost, or impassable inside a hazard. Isotropic; it
+///    decides where agents may stand.
+///  - crowding (continuum crowds, Treuille et al. 2006): where the crowd is
+///    dense, walking in a direction costs the ground cost divided by the
+///    speed the crowd lets one walk there, which blends from free walking to
+///    the crowd's own velocity along that direction as density rises. Walking
+///    with a dense stream is cheap, against it dear; and passing an oncoming
+///    stream on the wrong side (keeping it on one's right) costs extra, so
+///    opposing groups' fields pick opposite sides early and lanes form
+///    instead of a jam. Agent counts and
+///    velocities are box-filtered over 3 x 3 cells and read one cell ahead
+///    in the direction of travel; costs are quantised to eighths so small
+///    fluctuations do not wake the solver. Stored only for tiles near
+///    agents; elsewhere every direction costs the ground cost.
+class CostField {
+public:
+    CostField(const NavGrid& grid, const CrowdSettings& settings);
+    ~CostField();
+
+    /// Ground cost per cell (kImpassable where nobody may stand).
+    std::span<const float> cost() const { return mCost; }
+    bool passable(uint32_t cell) const { return mCost[cell] < NavGrid::kImpassable; }
+    /// Whether world point `p` lies on a passable cell of the grid.
+    bool passableAt(glm::vec2 p) const;
+    /// The directed costs of `tile`, or null where every direction costs cost().
+    const DirectedCosts* directed(uint32_t tile) const { return mDirected[tile].get(); }
+    /// The agents counted in the cell under world point `p` at the last
+    /// density splat: how many, and their summed velocity.
+    void crowdAt(glm::vec2 p, float& count, glm::vec2& velocity) const;
+    /// The largest cost of leaving `cell` in any direction.
+    float highestCost(uint32_t cell) const;
+
+    void addHazard(const Hazard& hazard) { mHazards.push_back(hazard); }
+    /// Drops the hazards expired at `now`, appending the cells they covered.
+    void expireHazards(double now, std::vector<CellRect>& freed);
+    uint32_t hazardCount() const { return uint32_t(mHazards.size()); }
+    /// The active hazard containing `p`, or null.
+    const Hazard* hazardAt(glm::vec2 p) const;
+    /// The cells a hazard makes impassable.
+    CellRect hazardCells(const Hazard& hazard) const;
+
+    /// Agents per cell of `tile` and their summed velocity, recounted from
+    /// the agents binned in it.
+    void recountTile(uint32_t tile, std::span<const uint32_t> agents, std::span<const glm::vec3> positions,
+                     std::span<const glm::vec2> velocities);
+    /// Recomputes every cell of `tiles` (ascending, distinct) and records
+    /// what changed.
+    void recomputeTiles(std::span<const uint32_t> tiles, CostChanges& changes, uint32_t threads);
+    /// The tiles a cell rectangle touches, ascending.
+    std::vector<uint32_t> tilesOf(const CellRect& cells) const;
+    size_t bytes() const;
+
+private:
+    /// Agents counted into one tile's cells.
+    struct Samples {
+        std::array<uint16_t, NavGrid::kTileCells * NavGrid::kTileCells> count{};
+        std::array<glm::vec2, NavGrid::kTileCells * NavGrid::kTileCells> velocity{};
+    };
+
+    bool recomputeTile(uint32_t tile, std::vector<uint32_t>& raised);
+    /// How much the crowd adds to the cost of leaving cell (i, j) in
+    /// direction d, as a multiple of the ground cost.
+    float crowdingCost(int32_t i, int32_t j, int d) const;
+    /// Density of `count` agents over 3 x 3 cells, 0 at densityMin to 1 at densityMax.
+    float densityFraction(float count) const;
+    /// Box-filtered agent count and velocity sum around cell (i, j).
+    void crowdAround(int32_t i, int32_t j, float& count, glm::vec2& velocity) const;
+
+    const NavGrid& mGrid;
+    float mDensityMin, mDensityRange, mSlowest, mFlowSpeed;
+    std::vector<float> mCost;
+    std::vector<std::unique_ptr<Samples>> mSamples;        ///< per tile, where agents are
+    std::vector<std::unique_ptr<DirectedCosts>> mDirected; ///< per tile, where the crowd raises costs
+    std::vector<Hazard> mHazards;
+};
+
+} // namespace tessera::crowd

@@ -1,0 +1,457 @@
+#include "tessera/crowd/Crowd.h"
+
+#include "AgentBins.h"
+#include "AgentOrder.h"
+#include "AgentState.h"
+#include "Avoidance.h"
+#include "Navigation.h"
+#include "SpatialHash.h"
+#include "tessera/core/ParallelFor.h"
+#include "tessera/core/Random.h"
+#include "tessera/profiler/CpuScope.h"
+#include "tessera/scene/SceneGraph.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+namespace tessera::crowd {
+namespace {
+
+// Agents per parallel task: enough work to amortise scheduling, small
+// enough to balance. Fixed, so the split never depends on the thread count.
+constexpr uint32_t kGrain = 256;
+// How far an agent may move in one step plus what separation may add, for
+// neighbour queries made with the hash built before the step moved anyone.
+constexpr float kQuerySlack = 0.15f;
+// Walls (impassable cells) are avoided this many seconds ahead; the nearest
+// kMaxWalls cells within reach count.
+constexpr float kWallHorizon = 1.0f;
+constexpr uint32_t kMaxWalls = 8;
+// Steps between re-sorting the agents in memory by where they stand.
+constexpr uint64_t kReorderSteps = 32;
+// Separation stops once no agent needed a push longer than this (metres).
+constexpr float kSettled = 1e-3f;
+// An arrival at a Stay goal picks its spot up to this far on (metres)...
+constexpr float kStaySpotRange = 8.0f;
+// ...and has reached it when closer than this.
+constexpr float kStaySpotReach = 0.3f;
+// A stuck agent sidesteps this far off its preferred direction (radians),
+// first to the right, swapping sides every kSidestepPeriod seconds.
+constexpr float kSidestepAngle = 1.1f;
+constexpr float kSidestepPeriod = 2.0f;
+// Oncoming walkers ahead turn an agent's preferred direction to the right
+// by this much each, up to kMaxLaneShift radians: opposing streams settle
+// into lanes instead of meeting head on.
+constexpr float kLaneShift = 0.12f;
+constexpr float kMaxLaneShift = 0.6f;
+constexpr float kStreamLookAhead = 5.0f; // metres
+
+using Clock = std::chrono::steady_clock;
+double millisecondsSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+glm::vec2 rotate(glm::vec2 v, float angle) {
+    const float c = std::cos(angle), s = std::sin(angle);
+    return {v.x * c - v.y * s, v.x * s + v.y * c};
+}
+
+float wrapAngle(float a) {
+    constexpr float pi = std::numbers::pi_v<float>;
+    return a - 2.0f * pi * std::floor((a + pi) / (2.0f * pi));
+}
+
+glm::vec2 xz(const glm::vec3& p) { return {p.x, p.z}; }
+
+} // namespace
+
+void Crowd::step() {
+    const auto start = Clock::now();
+    mTime += mSettings.timeStep;
+    {
+        TESSERA_CPU_SCOPE("crowd.fields");
+        reactToTerrain();
+        mNavigation->expireHazards(mTime);
+        const uint64_t densitySteps =
+            std::max<uint64_t>(1, uint64_t(std::lround(mSettings.densityUpdateSeconds / mSettings.timeStep)));
+        if (mSteps % densitySteps == 0) mNavigation->updateDensity(*mBins, mAgents.position, mAgents.velocity);
+        mStats.fieldTilesSolved = mNavigation->solve();
+    }
+    const auto fieldsDone = Clock::now();
+    {
+        TESSERA_CPU_SCOPE("crowd.avoidance");
+        mHash->build(mAgents.position, std::max(0.5f * mSettings.neighbourRadius, 2.0f * mLargestRadius + kQuerySlack),
+                     mSettings.threads);
+        steer();
+    }
+    const auto avoidanceDone = Clock::now();
+    {
+        TESSERA_CPU_SCOPE("crowd.integration");
+        integrate();
+        separate();
+        finishStep();
+        publish();
+    }
+    ++mSteps;
+    mTimings.fields = std::chrono::duration<double, std::milli>(fieldsDone - start).count();
+    mTimings.avoidance = std::chrono::duration<double, std::milli>(avoidanceDone - fieldsDone).count();
+    mTimings.integration = millisecondsSince(avoidanceDone);
+}
+
+void Crowd::reactToTerrain() {
+    const std::span<const terrain::CraterSplat> history = mTerrain.splatHistory();
+    for (; mSplatsSeen < history.size(); ++mSplatsSeen) {
+        const Hazard hazard = mNavigation->addCrater(mTerrain, history[mSplatsSeen], mTime);
+        // Agents near the impact run from it (those in its tiles or around).
+        const float reach = hazard.radius * mSettings.fleeRadiusFactor;
+        const NavGrid& grid = navGrid();
+        const CellRect cells = grid.cellsTouching(hazard.center - reach, hazard.center + reach);
+        if (cells.empty()) continue;
+        constexpr int32_t n = int32_t(NavGrid::kTileCells);
+        for (int32_t tj = cells.j0 / n; tj <= cells.j1 / n; ++tj)
+            for (int32_t ti = cells.i0 / n; ti <= cells.i1 / n; ++ti)
+                for (uint32_t a : mBins->agentsIn(uint32_t(tj) * grid.tilesX() + uint32_t(ti)))
+                    if (glm::distance(xz(mAgents.position[a]), hazard.center) < reach) {
+                        mState->fleeTime[a] = mSettings.fleeSeconds;
+                        mState->spot[a] = hazard.center;
+                        mState->flags[a] &= ~kStaying;
+                    }
+    }
+}
+
+void Crowd::steer() {
+    const uint32_t count = uint32_t(mAgents.size());
+    const CrowdSettings& s = mSettings;
+    const Navigation& nav = *mNavigation;
+    const CostField& cost = nav.cost();
+    const NavGrid& grid = nav.grid();
+    const float neighbourRadius2 = s.neighbourRadius * s.neighbourRadius;
+    const float closeRadius = 0.5f * s.neighbourRadius, closeRadius2 = closeRadius * closeRadius;
+    const float maxDelta = s.maxAcceleration * s.timeStep;
+    AgentState& st = *mState;
+    CrowdAgents& a = mAgents;
+    core::parallelForRanges(count, kGrain, s.threads, [&](core::IndexRange range) {
+        Neighbour near[16];
+        float nearDistance[16];
+        WallPoint walls[kMaxWalls];
+        float wallDistance[kMaxWalls];
+        std::vector<VelocityLine> lines;
+        for (uint32_t i = range.begin; i < range.end; ++i) {
+            const glm::vec2 p = xz(a.position[i]);
+            uint8_t flags = st.flags[i] & ~(kOnWalkable | kEscaping | kUnreachable);
+            const bool walkable = cost.passableAt(p);
+            if (walkable) flags |= kOnWalkable;
+            const float speed = a.preferredSpeed[i];
+            glm::vec2 preferred(0.0f);
+            if (st.fleeTime[i] > 0.0f) {
+                const glm::vec2 away = p - st.spot[i];
+                const float length = glm::length(away);
+                preferred = (length > 1e-4f ? away / length : glm::vec2(1.0f, 0.0f)) * speed * s.fleeSpeedFactor;
+            } else if (!walkable) {
+                flags |= kEscaping;
+                preferred = nav.escapeDirection(p) * speed;
+            } else if (flags & kStaying) {
+                // A spot others stand on is given up for another further in.
+                if (st.stuckTime[i] > s.stuckSeconds) {
+                    Random random(a.id[i], ++st.arrivals[i]);
+                    const Region& region = mGoals[a.goalGroup[i]].region;
+                    pickSpot(i, glm::normalize(region.center - p + 1e-6f), random);
+                    st.stuckTime[i] = 0.0f;
+                    st.anchor[i] = p;
+                }
+                const glm::vec2 to = st.spot[i] - p;
+                const float length = glm::length(to);
+                if (length > kStaySpotReach) preferred = to / length * std::min(speed, length);
+            } else {
+                const PotentialField& field = nav.field(a.goalGroup[i]);
+                glm::vec2 direction = field.descent(p);
+                if (direction == glm::vec2(0.0f) && !field.goal().contains(p)) flags |= kUnreachable;
+                if (st.stuckTime[i] > s.stuckSeconds) {
+                    const bool left = uint32_t((st.stuckTime[i] - s.stuckSeconds) / kSidestepPeriod) & 1u;
+                    direction = rotate(direction, left ? -kSidestepAngle : kSidestepAngle);
+                }
+                const glm::ivec2 c = grid.cellOf(p);
+                preferred = direction * speed * grid.speedFactor(grid.index(uint32_t(c.x), uint32_t(c.y)));
+            }
+            st.flags[i] = flags;
+
+            // Standing agents stay put (others avoid them; separation moves
+            // them when pushed): no neighbours to look at.
+            if (preferred == glm::vec2(0.0f) && a.velocity[i] == glm::vec2(0.0f)) {
+                st.nextVelocity[i] = glm::vec2(0.0f);
+                continue;
+            }
+            // The nearest neighbours, by distance then index. Looked for close
+            // by first: in a dense crowd that finds them all at a fraction of
+            // the cost; the rest of the radius only when it did not.
+            uint32_t found = 0;
+            const uint32_t cap = s.maxNeighbours;
+            auto consider = [&](uint32_t j, glm::vec2 q, float lo2, float hi2) {
+                if (j == i) return;
+                const glm::vec2 offset = q - p;
+                const float d = glm::dot(offset, offset);
+                if (d <= lo2 || d > hi2 || (found == cap && d >= nearDistance[cap - 1])) return;
+                uint32_t k = found < cap ? found++ : cap - 1;
+                while (k > 0 && nearDistance[k - 1] > d) {
+                    near[k] = near[k - 1];
+                    nearDistance[k] = nearDistance[k - 1];
+                    --k;
+                }
+                near[k] = {offset, a.velocity[j], a.radius[j]};
+                nearDistance[k] = d;
+            };
+            mHash->forEachNear(p, closeRadius, [&](uint32_t j, glm::vec2 q) { consider(j, q, -1.0f, closeRadius2); });
+            if (found < cap)
+                mHash->forEachNear(p, s.neighbourRadius,
+                                   [&](uint32_t j, glm::vec2 q) { consider(j, q, closeRadius2, neighbourRadius2); });
+            // Keep right of oncoming walkers: the nearest ones, and a stream
+            // coming the other way a few metres ahead.
+            const float preferredSpeed = glm::length(preferred);
+            if (preferredSpeed > 0.0f) {
+                const glm::vec2 ahead = preferred / preferredSpeed;
+                float oncoming = 0.0f;
+                for (uint32_t k = 0; k < found; ++k)
+                    oncoming += glm::dot(near[k].offset, ahead) > 0.3f * glm::length(near[k].offset) &&
+                                glm::dot(near[k].velocity, ahead) < -0.3f * preferredSpeed;
+                float streamCount;
+                glm::vec2 stream;
+                cost.crowdAt(p + ahead * kStreamLookAhead, streamCount, stream);
+                if (streamCount > 0.0f)
+                    oncoming += std::clamp(-glm::dot(stream, ahead) / preferredSpeed, 0.0f, 8.0f);
+                if (oncoming > 0.0f) preferred = rotate(preferred, std::min(kMaxLaneShift, kLaneShift * oncoming));
+            }
+            const float maxSpeed = std::max(glm::length(preferred), 0.25f * speed);
+            // Walls: the nearest points of the impassable cells within reach
+            // (none for an agent walking off impassable ground).
+            uint32_t wallCount = 0;
+            if (walkable) {
+                const float wallReach = a.radius[i] + maxSpeed * kWallHorizon;
+                const glm::ivec2 c0 = grid.cellOf(p - wallReach), c1 = grid.cellOf(p + wallReach);
+                for (int32_t cj = c0.y; cj <= c1.y; ++cj)
+                    for (int32_t ci = c0.x; ci <= c1.x; ++ci) {
+                        if (grid.inGrid(ci, cj) && cost.passable(grid.index(uint32_t(ci), uint32_t(cj)))) continue;
+                        const glm::vec2 lo = glm::vec2(float(ci), float(cj)) * grid.cellSize();
+                        const glm::vec2 offset = glm::clamp(p, lo, lo + grid.cellSize()) - p;
+                        const float d = glm::dot(offset, offset);
+                        if (d > wallReach * wallReach || (wallCount == kMaxWalls && d >= wallDistance[kMaxWalls - 1]))
+                            continue;
+                        uint32_t k = wallCount < kMaxWalls ? wallCount++ : kMaxWalls - 1;
+                        while (k > 0 && wallDistance[k - 1] > d) {
+                            walls[k] = walls[k - 1];
+                            wallDistance[k] = wallDistance[k - 1];
+                            --k;
+                        }
+                        walls[k] = {offset};
+                        wallDistance[k] = d;
+                    }
+            }
+            AvoidanceQuery query{a.velocity[i], preferred, maxSpeed, a.radius[i], s.comfortMargin,
+                                 s.horizonSeconds, kWallHorizon, s.timeStep};
+            const glm::vec2 chosen = avoidCollisions(query, std::span<const Neighbour>(near, found),
+                                                     std::span<const WallPoint>(walls, wallCount), lines);
+            const glm::vec2 delta = chosen - a.velocity[i];
+            const float change = glm::length(delta);
+            st.nextVelocity[i] = change > maxDelta ? a.velocity[i] + delta * (maxDelta / change) : chosen;
+        }
+    });
+}
+
+void Crowd::integrate() {
+    const CrowdSettings& s = mSettings;
+    AgentState& st = *mState;
+    CrowdAgents& a = mAgents;
+    const float dt = s.timeStep;
+    const float maxTurn = s.maxTurnRate * dt;
+    core::parallelForRanges(uint32_t(a.size()), kGrain, s.threads, [&](core::IndexRange range) {
+        for (uint32_t i = range.begin; i < range.end; ++i) {
+            const glm::vec2 v = st.nextVelocity[i];
+            a.velocity[i] = v;
+            st.moved[i] = xz(a.position[i]) + v * dt;
+            const float speed = glm::length(v);
+            if (speed > 0.05f) {
+                const float turn = wrapAngle(std::atan2(v.x, v.y) - a.heading[i]);
+                a.heading[i] = wrapAngle(a.heading[i] + std::clamp(turn, -maxTurn, maxTurn));
+            }
+            if (speed > s.walkAbove) a.clip[i] = AgentClip::Walk;
+            else if (speed < s.idleBelow) a.clip[i] = AgentClip::Idle;
+            // The walk phase follows the ground covered, so feet do not slide;
+            // a bigger agent takes proportionally longer strides.
+            const float advance = a.clip[i] == AgentClip::Walk
+                                      ? speed * dt / (s.walkStrideLength * a.radius[i] / s.strideRadius)
+                                      : dt / s.idleCycleSeconds;
+            a.phase[i] += advance;
+            a.phase[i] -= std::floor(a.phase[i]);
+            st.fleeTime[i] = std::max(0.0f, st.fleeTime[i] - dt);
+        }
+    });
+}
+
+void Crowd::separate() {
+    const CrowdSettings& s = mSettings;
+    AgentState& st = *mState;
+    const CrowdAgents& a = mAgents;
+    const CostField& cost = mNavigation->cost();
+    const NavGrid& grid = navGrid();
+    const float h = grid.cellSize();
+    // Pushes `p` out of the impassable cells around it (and back onto its
+    // previous spot if it walked right into one).
+    auto keepOutOfWalls = [&](glm::vec2 p, float r, glm::vec2 previous) {
+        if (!cost.passableAt(p)) p = previous;
+        const glm::ivec2 c = grid.cellOf(p);
+        for (int32_t j = c.y - 1; j <= c.y + 1; ++j)
+            for (int32_t i = c.x - 1; i <= c.x + 1; ++i) {
+                if (grid.inGrid(i, j) && cost.passable(grid.index(uint32_t(i), uint32_t(j)))) continue;
+                const glm::vec2 lo = glm::vec2(float(i), float(j)) * h;
+                const glm::vec2 d = p - glm::clamp(p, lo, lo + h);
+                const float d2 = glm::dot(d, d);
+                if (d2 < r * r && d2 > 1e-12f) p += d * (r / std::sqrt(d2) - 1.0f);
+            }
+        return p;
+    };
+    // Jacobi iterations, each reading the positions of the last: the result
+    // does not depend on the order agents are visited in. They stop early
+    // once nobody needed a push (avoidance leaves little to do), which is
+    // decided from a maximum, so the same on any thread count.
+    if (a.size() == 0) return;
+    const uint32_t iterations = std::max(1u, s.separationIterations);
+    const uint32_t ranges = (uint32_t(a.size()) + kGrain - 1) / kGrain;
+    std::vector<float> largestPush(ranges);
+    for (uint32_t iteration = 0; iteration < iterations; ++iteration) {
+        const std::vector<glm::vec2>& in = st.moved;
+        std::vector<glm::vec2>& out = st.nextVelocity; // free once integrate() used it
+        const bool neighbours = s.separationIterations > 0;
+        core::parallelForRanges(uint32_t(a.size()), kGrain, s.threads, [&](core::IndexRange range) {
+            float largest = 0.0f;
+            for (uint32_t i = range.begin; i < range.end; ++i) {
+                glm::vec2 p = in[i];
+                const float r = a.radius[i];
+                if (neighbours) {
+                    glm::vec2 push(0.0f);
+                    const float near = r + mLargestRadius + 2.0f * kQuerySlack;
+                    mHash->forEachNear(p, near, [&](uint32_t j, glm::vec2 was) {
+                        // Where j stood at the start of the step is within
+                        // the slack of where it is: far from that, no need
+                        // to look j up at all.
+                        if (j == i || glm::dot(p - was, p - was) > near * near) return;
+                        const glm::vec2 d = p - in[j];
+                        const float reach = r + a.radius[j];
+                        const float d2 = glm::dot(d, d);
+                        if (d2 >= reach * reach) return;
+                        const float distance = std::sqrt(d2);
+                        const glm::vec2 n = distance > 1e-5f ? d / distance : glm::vec2(i < j ? 1.0f : -1.0f, 0.0f);
+                        push += 0.5f * (reach - distance) * n;
+                    });
+                    p += push;
+                    largest = std::max(largest, glm::dot(push, push));
+                }
+                if (st.flags[i] & kOnWalkable) p = keepOutOfWalls(p, r, in[i]);
+                out[i] = p;
+            }
+            largestPush[range.begin / kGrain] = largest;
+        });
+        st.moved.swap(st.nextVelocity);
+        if (*std::max_element(largestPush.begin(), largestPush.end()) < kSettled * kSettled) break;
+    }
+}
+
+void Crowd::arrive(uint32_t i) {
+    AgentState& st = *mState;
+    st.flags[i] |= kArrived;
+    const uint16_t arrivals = ++st.arrivals[i];
+    Random random(mAgents.id[i], arrivals);
+    // Progress is measured afresh towards whatever comes next.
+    st.anchor[i] = xz(mAgents.position[i]);
+    st.stuckTime[i] = 0.0f;
+    const uint32_t groups = uint32_t(mGoals.size());
+    const GoalGroup& goal = mGoals[mAgents.goalGroup[i]];
+    if (goal.onArrival == ArrivalPolicy::Wander && groups > 1) {
+        const uint32_t other = random.below(groups - 1);
+        mAgents.goalGroup[i] = uint16_t(other >= mAgents.goalGroup[i] ? other + 1 : other);
+        return;
+    }
+    // Stay (or wander with nowhere else to go).
+    st.flags[i] |= kStaying;
+    const glm::vec2 here = xz(mAgents.position[i]);
+    const glm::vec2 velocity = mAgents.velocity[i];
+    const float speed = glm::length(velocity);
+    pickSpot(i, speed > 1e-3f ? velocity / speed : glm::normalize(goal.region.center - here + 1e-6f), random);
+}
+
+void Crowd::pickSpot(uint32_t i, glm::vec2 inward, Random& random) {
+    // A walkable spot of its own a few metres further in, so arrivals make
+    // room for those behind instead of stopping in the entrance.
+    AgentState& st = *mState;
+    const Region& region = mGoals[mAgents.goalGroup[i]].region;
+    const glm::vec2 here = xz(mAgents.position[i]);
+    const glm::vec2 across(-inward.y, inward.x);
+    st.spot[i] = here;
+    for (int attempt = 0; attempt < 16; ++attempt) {
+        const glm::vec2 spot = here + inward * random.range(2.0f, kStaySpotRange) +
+                               across * random.range(-0.5f, 0.5f) * kStaySpotRange;
+        if (region.contains(spot) && mNavigation->cost().passableAt(spot)) {
+            st.spot[i] = spot;
+            return;
+        }
+    }
+}
+
+void Crowd::finishStep() {
+    const CrowdSettings& s = mSettings;
+    AgentState& st = *mState;
+    CrowdAgents& a = mAgents;
+    const Navigation& nav = *mNavigation;
+    core::parallelForRanges(uint32_t(a.size()), kGrain, s.threads, [&](core::IndexRange range) {
+        for (uint32_t i = range.begin; i < range.end; ++i) {
+            const glm::vec2 p = st.moved[i];
+            a.position[i] = glm::vec3(p.x, mTerrain.heightAt(p.x, p.y), p.y);
+            st.flags[i] &= ~kArrived;
+            if (!(st.flags[i] & kStaying) && nav.field(a.goalGroup[i]).goal().contains(p)) arrive(i);
+            // Stuck: wanting to walk but not getting stuckProgress away from
+            // where it last was. Measured on the ground, not on the
+            // potential, which rises under an agent as the crowd ahead of
+            // it thickens.
+            const bool settled = (st.flags[i] & kStaying) && glm::distance(p, st.spot[i]) <= kStaySpotReach;
+            if (settled || (st.flags[i] & (kEscaping | kUnreachable)) || st.fleeTime[i] > 0.0f ||
+                glm::distance(p, st.anchor[i]) >= s.stuckProgress) {
+                st.stuckTime[i] = 0.0f;
+                st.anchor[i] = p;
+            } else {
+                st.stuckTime[i] += s.timeStep;
+            }
+        }
+    });
+}
+
+void Crowd::publish() {
+    const AgentState& st = *mState;
+    CrowdStats stats;
+    stats.agents = uint32_t(mAgents.size());
+    for (uint32_t i = 0; i < stats.agents; ++i) {
+        const uint8_t flags = st.flags[i];
+        stats.walking += mAgents.clip[i] == AgentClip::Walk;
+        stats.fleeing += st.fleeTime[i] > 0.0f;
+        stats.escaping += (flags & kEscaping) != 0;
+        stats.unreachable += (flags & kUnreachable) != 0;
+        stats.staying += (flags & kStaying) != 0;
+        stats.stuck += st.stuckTime[i] > mSettings.stuckSeconds;
+        stats.maxStuckSeconds = std::max(stats.maxStuckSeconds, st.stuckTime[i]);
+        mArrivals += (flags & kArrived) != 0;
+    }
+    stats.arrivals = mArrivals;
+    stats.activeHazards = mNavigation->cost().hazardCount();
+    stats.fieldTilesSolved = mStats.fieldTilesSolved;
+    stats.fieldTilesWaiting = mNavigation->activeTiles();
+    mStats = stats;
+    mBins->build(mAgents.position, mAgents.radius, mSettings.agentHeight, mSettings.threads);
+    // Now and then, agents are re-sorted in memory by the tile they stand on.
+    if (mSteps % kReorderSteps == 0 && !mAgents.id.empty()) {
+        reorderAgents(mAgents, *mState, mBins->order(), mSettings.threads);
+        for (uint32_t i = 0; i < uint32_t(mAgents.size()); ++i) mIndexOf[mAgents.id[i]] = i;
+        mBins->build(mAgents.position, mAgents.radius, mSettings.agentHeight, mSettings.threads);
+    }
+    if (mGraph && mGraph->isAlive(mNode)) mGraph->setLocalBounds(mNode, bounds());
+}
+
+} // namespace tessera::crowd

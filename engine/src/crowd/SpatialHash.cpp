@@ -1,0 +1,60 @@
+#include "SpatialHash.h"
+
+#include "tessera/core/ParallelFor.h"
+
+#include <algorithm>
+#include <bit>
+
+#include <glm/vec2.hpp>
+#include <utility>
+
+namespace tessera::crowd {
+
+void SpatialHash::build(std::span<const glm::vec3> positions, float cellSize, uint32_t threads) {
+    const uint32_t n = uint32_t(positions.size());
+    mInverseCell = 1.0f / cellSize;
+    // About one bucket per agent (at least 1,024) keeps chains short.
+    const uint32_t buckets = std::bit_ceil(std::max(n, 1024u));
+    mMask = buckets - 1;
+    auto cellOf = [&](uint32_t a) {
+        return glm::ivec2(int32_t(std::floor(positions[a].x * mInverseCell)),
+                          int32_t(std::floor(positions[a].z * mInverseCell)));
+    };
+    // mKey holds each agent's bucket until the slots take their keys.
+    std::vector<uint32_t>& bucketOfAgent = mKey;
+    bucketOfAgent.resize(n);
+    core::parallelForRanges(n, 4096, threads, [&](core::IndexRange r) {
+        for (uint32_t a = r.begin; a < r.end; ++a) {
+            const glm::ivec2 c = cellOf(a);
+            bucketOfAgent[a] = bucketOf(c.x, c.y);
+        }
+    });
+    mStart.assign(buckets + 1, 0);
+    for (uint32_t a = 0; a < n; ++a) ++mStart[bucketOfAgent[a]];
+    // Exclusive prefix sums, then scatter in index order (a counting sort,
+    // stable within each bucket); scattering advances each start to the
+    // next bucket's, so one shift restores them.
+    uint32_t sum = 0;
+    for (uint32_t b = 0; b < buckets; ++b) sum += std::exchange(mStart[b], sum);
+    mStart[buckets] = sum;
+    mAgent.resize(n);
+    for (uint32_t a = 0; a < n; ++a) mAgent[mStart[bucketOfAgent[a]]++] = a;
+    for (uint32_t b = buckets; b > 0; --b) mStart[b] = mStart[b - 1];
+    mStart[0] = 0;
+    mPosition.resize(n);
+    core::parallelForRanges(n, 4096, threads, [&](core::IndexRange r) {
+        for (uint32_t slot = r.begin; slot < r.end; ++slot) {
+            const uint32_t a = mAgent[slot];
+            const glm::ivec2 c = cellOf(a);
+            mKey[slot] = cellKey(c.x, c.y);
+            mPosition[slot] = {positions[a].x, positions[a].z};
+        }
+    });
+}
+
+size_t SpatialHash::bytes() const {
+    return (mStart.capacity() + mAgent.capacity() + mKey.capacity()) * sizeof(uint32_t) +
+           mPosition.capacity() * sizeof(glm::vec2);
+}
+
+} // namespace tessera::crowd
