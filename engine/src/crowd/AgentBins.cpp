@@ -1,5 +1,6 @@
 #include "AgentBins.h"
 
+#include "BucketSort.h"
 #include "tessera/core/ParallelFor.h"
 
 #include <algorithm>
@@ -32,19 +33,10 @@ void AgentBins::build(std::span<const glm::vec3> positions, std::span<const floa
             mTileOf[a] = mGrid.tileOf(i, j);
         }
     });
-    std::fill(mStart.begin(), mStart.end(), 0u);
-    for (uint32_t a = 0; a < n; ++a) ++mStart[mTileOf[a]];
+    bucketSort(mTileOf, tiles, mStart, mAgents, threads);
     mOccupied.clear();
-    uint32_t sum = 0;
-    for (uint32_t t = 0; t < tiles; ++t) {
-        if (mStart[t]) mOccupied.push_back(t);
-        sum += std::exchange(mStart[t], sum);
-    }
-    mStart[tiles] = sum;
-    mAgents.resize(n);
-    for (uint32_t a = 0; a < n; ++a) mAgents[mStart[mTileOf[a]]++] = a;
-    for (uint32_t t = tiles; t > 0; --t) mStart[t] = mStart[t - 1];
-    mStart[0] = 0;
+    for (uint32_t t = 0; t < tiles; ++t)
+        if (mStart[t + 1] > mStart[t]) mOccupied.push_back(t);
 
     // Level 0: boxes of the occupied tiles (the others stay empty from the
     // last build or were emptied below).

@@ -82,8 +82,7 @@ void Crowd::step() {
     const auto fieldsDone = Clock::now();
     {
         TESSERA_CPU_SCOPE("crowd.avoidance");
-        mHash->build(mAgents.position, std::max(0.5f * mSettings.neighbourRadius, 2.0f * mLargestRadius + kQuerySlack),
-                     mSettings.threads);
+        mHash->build(mAgents.position, hashCellSize(), mSettings.threads);
         steer();
     }
     const auto avoidanceDone = Clock::now();
@@ -98,6 +97,18 @@ void Crowd::step() {
     mTimings.fields = std::chrono::duration<double, std::milli>(fieldsDone - start).count();
     mTimings.avoidance = std::chrono::duration<double, std::milli>(avoidanceDone - fieldsDone).count();
     mTimings.integration = millisecondsSince(avoidanceDone);
+}
+
+float Crowd::hashCellSize() const {
+    // About two agents per cell where they are: smaller cells waste
+    // lookups on empty cells in a sparse crowd, larger ones make a dense
+    // crowd's queries wade through agents out of reach. The ground they
+    // stand on is measured in occupied tiles (from the last step's bins).
+    const float smallest = 2.0f * mLargestRadius + kQuerySlack;
+    const float tile = float(NavGrid::kTileCells) * navGrid().cellSize();
+    const float area = float(mBins->occupiedTiles().size()) * tile * tile;
+    const float perCell = mAgents.size() ? std::sqrt(2.0f * area / float(mAgents.size())) : smallest;
+    return std::clamp(perCell, smallest, std::max(smallest, mSettings.neighbourRadius));
 }
 
 void Crowd::reactToTerrain() {

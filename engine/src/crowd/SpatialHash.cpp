@@ -1,12 +1,12 @@
 #include "SpatialHash.h"
 
+#include "BucketSort.h"
 #include "tessera/core/ParallelFor.h"
 
 #include <algorithm>
 #include <bit>
 
 #include <glm/vec2.hpp>
-#include <utility>
 
 namespace tessera::crowd {
 
@@ -29,18 +29,7 @@ void SpatialHash::build(std::span<const glm::vec3> positions, float cellSize, ui
             bucketOfAgent[a] = bucketOf(c.x, c.y);
         }
     });
-    mStart.assign(buckets + 1, 0);
-    for (uint32_t a = 0; a < n; ++a) ++mStart[bucketOfAgent[a]];
-    // Exclusive prefix sums, then scatter in index order (a counting sort,
-    // stable within each bucket); scattering advances each start to the
-    // next bucket's, so one shift restores them.
-    uint32_t sum = 0;
-    for (uint32_t b = 0; b < buckets; ++b) sum += std::exchange(mStart[b], sum);
-    mStart[buckets] = sum;
-    mAgent.resize(n);
-    for (uint32_t a = 0; a < n; ++a) mAgent[mStart[bucketOfAgent[a]]++] = a;
-    for (uint32_t b = buckets; b > 0; --b) mStart[b] = mStart[b - 1];
-    mStart[0] = 0;
+    bucketSort(bucketOfAgent, buckets, mStart, mAgent, threads);
     mPosition.resize(n);
     core::parallelForRanges(n, 4096, threads, [&](core::IndexRange r) {
         for (uint32_t slot = r.begin; slot < r.end; ++slot) {

@@ -114,6 +114,7 @@ public:
 private:
     Crowd(const terrain::Terrain& terrain, const CrowdSettings& settings, std::span<const GoalGroup> goals);
     Status spawn(std::span<const SpawnPattern> spawns);
+    float hashCellSize() const;
     void reactToTerrain();
     void steer();
     void integrate();
