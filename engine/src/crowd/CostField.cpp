@@ -111,27 +111,49 @@ float CostField::densityFraction(float count) const {
     return std::clamp((count / (9.0f * mGrid.cellSize() * mGrid.cellSize()) - mDensityMin) / mDensityRange, 0.0f, 1.0f);
 }
 
-float CostField::crowdingCost(int32_t i, int32_t j, int d) const {
+// The crowd around one tile: box-filtered agent counts and summed
+// velocities of its cells and of the cells around it that the look-ahead
+// reaches, gathered once per tile rather than per cell and direction.
+struct CostField::CrowdWindow {
+    static constexpr int32_t kMargin = 2, kSize = kTile + 2 * kMargin;
+    int32_t i0 = 0, j0 = 0; ///< the cell at window (0, 0)
+    float count[kSize * kSize];
+    glm::vec2 velocity[kSize * kSize];
+
+    int32_t at(int32_t i, int32_t j) const { return (j - j0) * kSize + (i - i0); }
+};
+
+void CostField::gatherCrowd(uint32_t tile, CrowdWindow& window) const {
+    const CellRect r = mGrid.tileCells(tile);
+    window.i0 = r.i0 - CrowdWindow::kMargin;
+    window.j0 = r.j0 - CrowdWindow::kMargin;
+    for (int32_t y = 0; y < CrowdWindow::kSize; ++y)
+        for (int32_t x = 0; x < CrowdWindow::kSize; ++x)
+            crowdAround(window.i0 + x, window.j0 + y, window.count[y * CrowdWindow::kSize + x],
+                        window.velocity[y * CrowdWindow::kSize + x]);
+}
+
+float CostField::crowdingCost(const CrowdWindow& window, int32_t i, int32_t j, int d) const {
     const int32_t di[4] = {-1, 1, 0, 0}, dj[4] = {0, 0, -1, 1};
     // Right of the direction of travel (clockwise seen from above).
     const int32_t ri[4] = {0, 0, 1, -1}, rj[4] = {-1, 1, 0, 0};
     float extra = 0.0f;
-    float count;
-    glm::vec2 velocity;
     // Ahead: the speed the crowd lets one walk there blends from a free walk
     // to the crowd's own velocity along the way (1 with the stream,
     // mSlowest against it or into a standing crowd).
-    crowdAround(i + di[d], j + dj[d], count, velocity);
-    if (const float t = densityFraction(count); t > 0.0f) {
-        const float along = (velocity.x * float(di[d]) + velocity.y * float(dj[d])) / (count * mFlowSpeed);
+    const int32_t ahead = window.at(i + di[d], j + dj[d]);
+    if (const float t = densityFraction(window.count[ahead]); t > 0.0f) {
+        const glm::vec2 v = window.velocity[ahead];
+        const float along = (v.x * float(di[d]) + v.y * float(dj[d])) / (window.count[ahead] * mFlowSpeed);
         extra += 1.0f / (1.0f + t * (std::clamp(along, mSlowest, 1.0f) - 1.0f)) - 1.0f;
     }
     // Ahead and to the right: oncoming walkers there mean passing them on
     // the wrong side. Keeping them on the left makes opposing groups choose
     // opposite sides long before they meet: lanes instead of a jam.
-    crowdAround(i + di[d] + ri[d], j + dj[d] + rj[d], count, velocity);
-    if (const float t = densityFraction(count); t > 0.0f) {
-        const float against = -(velocity.x * float(di[d]) + velocity.y * float(dj[d])) / (count * mFlowSpeed);
+    const int32_t right = window.at(i + di[d] + ri[d], j + dj[d] + rj[d]);
+    if (const float t = densityFraction(window.count[right]); t > 0.0f) {
+        const glm::vec2 v = window.velocity[right];
+        const float against = -(v.x * float(di[d]) + v.y * float(dj[d])) / (window.count[right] * mFlowSpeed);
         extra += kLanePenalty * t * std::clamp(against, 0.0f, 1.0f);
     }
     return extra;
@@ -154,6 +176,11 @@ bool CostField::recomputeTile(uint32_t tile, std::vector<uint32_t>& raised) {
                 crowdNear = true;
                 break;
             }
+    std::unique_ptr<CrowdWindow> window;
+    if (crowdNear) {
+        window = std::make_unique<CrowdWindow>();
+        gatherCrowd(tile, *window);
+    }
     DirectedCosts directed;
     bool changed = false, crowded = false;
     for (int32_t j = r.j0; j <= r.j1; ++j)
@@ -172,8 +199,8 @@ bool CostField::recomputeTile(uint32_t tile, std::vector<uint32_t>& raised) {
             auto& costs = directed[(j - r.j0) * kTile + (i - r.i0)];
             for (int d = 0; d < 4; ++d) {
                 costs[d] = ground;
-                if (!crowdNear || !(ground < NavGrid::kImpassable)) continue;
-                const float extra = crowdingCost(i, j, d);
+                if (!window || !(ground < NavGrid::kImpassable)) continue;
+                const float extra = crowdingCost(*window, i, j, d);
                 if (extra <= 0.0f) continue;
                 costs[d] = std::round(8.0f * ground * (1.0f + extra)) * 0.125f;
                 crowded |= costs[d] != ground;

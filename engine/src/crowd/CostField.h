@@ -100,10 +100,14 @@ private:
         std::array<glm::vec2, NavGrid::kTileCells * NavGrid::kTileCells> velocity{};
     };
 
+    struct CrowdWindow;
+
     bool recomputeTile(uint32_t tile, std::vector<uint32_t>& raised);
-    /// How much the crowd adds to the cost of leaving cell (i, j) in
-    /// direction d, as a multiple of the ground cost.
-    float crowdingCost(int32_t i, int32_t j, int d) const;
+    /// Fills `window` with the box-filtered crowd around `tile`.
+    void gatherCrowd(uint32_t tile, CrowdWindow& window) const;
+    /// How much the crowd adds to the cost of leaving cell (i, j) of the
+    /// window in direction d, as a multiple of the ground cost.
+    float crowdingCost(const CrowdWindow& window, int32_t i, int32_t j, int d) const;
     /// Density of `count` agents over 3 x 3 cells, 0 at densityMin to 1 at densityMax.
     float densityFraction(float count) const;
     /// Box-filtered agent count and velocity sum around cell (i, j).

@@ -20,110 +20,136 @@ constexpr float kSqrt2 = 1.41421356f;
 
 // The value of the cell at `at` in a window row-major with kStride, from
 // its eight neighbours (the multi-stencil scheme: the update on the axes
-// and the update on the diagonals, a grid turned by 45 degrees with cells
-// sqrt(2) apart; the lower wins). The diagonal stencil removes most of the
-// axis-only scheme's error on curved fronts, which grows with distance
-// along the diagonals. c holds the costs times spacing of leaving the cell
-// in each direction; a diagonal costs the mean of its two axes.
-float updateCell(const float* at, const float* c) {
+// and the update on the diagonals, a grid turned by 45 degrees; the lower
+// wins). The diagonal stencil removes most of the axis-only scheme's error
+// on curved fronts, which grows with distance along the diagonals.
+template <class Costs>
+float updateCell(const float* at, const Costs& c) {
     // Per axis, the neighbour cheapest to reach it by.
-    const float left = at[-1] + c[kMinusX], right = at[1] + c[kPlusX];
-    const float down = at[-kStride] + c[kMinusZ], up = at[kStride] + c[kPlusZ];
-    const bool useLeft = left <= right, useDown = down <= up;
-    float u = eikonalUpdate(useLeft ? at[-1] : at[1], useLeft ? c[kMinusX] : c[kPlusX],
-                            useDown ? at[-kStride] : at[kStride], useDown ? c[kMinusZ] : c[kPlusZ]);
+    const bool useLeft = at[-1] + c.axis[kMinusX] <= at[1] + c.axis[kPlusX];
+    const bool useDown = at[-kStride] + c.axis[kMinusZ] <= at[kStride] + c.axis[kPlusZ];
+    const int x = useLeft ? kMinusX : kPlusX, z = useDown ? kMinusZ : kPlusZ;
+    const float u = eikonalUpdate(at[useLeft ? -1 : 1], c.axis[x], c.axisInverse[x],
+                                  at[useDown ? -kStride : kStride], c.axis[z], c.axisInverse[z]);
     // Diagonals, never squeezing between two unreachable cells (a corner
     // of a wall).
-    const float minusMinus = kSqrt2 * 0.5f * (c[kMinusX] + c[kMinusZ]);
-    const float plusPlus = kSqrt2 * 0.5f * (c[kPlusX] + c[kPlusZ]);
-    const float minusPlus = kSqrt2 * 0.5f * (c[kMinusX] + c[kPlusZ]);
-    const float plusMinus = kSqrt2 * 0.5f * (c[kPlusX] + c[kMinusZ]);
-    const bool openMinusMinus = at[-1] < kInf || at[-kStride] < kInf;
-    const bool openPlusPlus = at[1] < kInf || at[kStride] < kInf;
-    const bool openMinusPlus = at[-1] < kInf || at[kStride] < kInf;
-    const bool openPlusMinus = at[1] < kInf || at[-kStride] < kInf;
-    const float mm = openMinusMinus ? at[-kStride - 1] : kInf, pp = openPlusPlus ? at[kStride + 1] : kInf;
-    const float mp = openMinusPlus ? at[kStride - 1] : kInf, pm = openPlusMinus ? at[-kStride + 1] : kInf;
-    const bool useMM = mm + minusMinus <= pp + plusPlus, useMP = mp + minusPlus <= pm + plusMinus;
-    const float diagonal = eikonalUpdate(useMM ? mm : pp, useMM ? minusMinus : plusPlus, useMP ? mp : pm,
-                                         useMP ? minusPlus : plusMinus);
+    const float mm = at[-1] < kInf || at[-kStride] < kInf ? at[-kStride - 1] : kInf;
+    const float pp = at[1] < kInf || at[kStride] < kInf ? at[kStride + 1] : kInf;
+    const float mp = at[-1] < kInf || at[kStride] < kInf ? at[kStride - 1] : kInf;
+    const float pm = at[1] < kInf || at[-kStride] < kInf ? at[-kStride + 1] : kInf;
+    const int one = mm + c.diagonal[0] <= pp + c.diagonal[1] ? 0 : 1;
+    const int two = mp + c.diagonal[2] <= pm + c.diagonal[3] ? 2 : 3;
+    const float diagonal = eikonalUpdate(one == 0 ? mm : pp, c.diagonal[one], c.diagonalInverse[one],
+                                         two == 2 ? mp : pm, c.diagonal[two], c.diagonalInverse[two]);
     return std::min(u, diagonal);
+}
+
+// Change between two potentials that counts towards settling: absolute, less
+// a relative part (far from the goal a float's last bit is coarser than any
+// absolute tolerance); infinity when reachability changed.
+float settlingChange(float now, float was) {
+    if (now == was) return 0.0f;
+    return std::isfinite(now) && std::isfinite(was) ? std::abs(now - was) - 1e-5f * std::abs(now) : kInf;
 }
 
 } // namespace
 
-void FieldSolver::solveJob(Job& job, const PotentialField& field, const CostField& cost) const {
+void FieldSolver::prepare(Job& job, const PotentialField& field, const CostField& cost) const {
     const CellRect r = mGrid.tileCells(job.tile);
     const int32_t w = r.i1 - r.i0 + 1, h = r.j1 - r.j0 + 1;
     const float cell = mGrid.cellSize();
     const std::span<const float> values = field.values();
     // Window (x, y) holds cell (r.i0 + x - 1, r.j0 + y - 1); the ring outside
     // the tile stays fixed during the solve.
-    for (int32_t y = 0; y < h + 2; ++y)
-        for (int32_t x = 0; x < w + 2; ++x) {
+    for (int32_t y = 0; y < int32_t(kWindow); ++y)
+        for (int32_t x = 0; x < int32_t(kWindow); ++x) {
             const int32_t i = r.i0 + x - 1, j = r.j0 + y - 1;
-            job.phi[y * kWindow + x] = mGrid.inGrid(i, j) ? values[mGrid.index(uint32_t(i), uint32_t(j))] : kInf;
+            const bool loaded = x <= w + 1 && y <= h + 1 && mGrid.inGrid(i, j);
+            job.phi[y * kWindow + x] = loaded ? values[mGrid.index(uint32_t(i), uint32_t(j))] : kInf;
         }
-    // Cost times spacing of leaving each cell in each direction (-x, +x,
-    // -z, +z); all four equal where nobody crowds the tile.
-    float ch[NavGrid::kTileCells * NavGrid::kTileCells][4];
-    float fixed[NavGrid::kTileCells * NavGrid::kTileCells];
     const DirectedCosts* directed = cost.directed(job.tile);
     const std::span<const float> ground = cost.cost();
-    for (int32_t y = 0; y < h; ++y)
-        for (int32_t x = 0; x < w; ++x) {
+    constexpr int32_t n = int32_t(NavGrid::kTileCells);
+    for (int32_t y = 0; y < n; ++y)
+        for (int32_t x = 0; x < n; ++x) {
+            const int32_t k = y * n + x;
+            job.before[k] = job.phi[(y + 1) * kWindow + x + 1];
+            if (x >= w || y >= h) {
+                job.mode[k] = kOutside;
+                continue;
+            }
             const uint32_t i = uint32_t(r.i0 + x), j = uint32_t(r.j0 + y);
             const float c = ground[mGrid.index(i, j)];
-            for (int d = 0; d < 4; ++d)
-                ch[y * w + x][d] = (directed ? (*directed)[y * NavGrid::kTileCells + x][d] : c) * cell;
-            fixed[y * w + x] = std::isfinite(c) ? field.fixedValue(i, j, c) : -1.0f;
+            if (!std::isfinite(c)) {
+                job.mode[k] = kWall;
+                continue;
+            }
+            job.fixed[k] = field.fixedValue(i, j, c);
+            job.mode[k] = job.fixed[k] >= 0.0f ? kFixed : kSolve;
+            CellCosts& costs = job.costs[k];
+            float ch[4];
+            for (int d = 0; d < 4; ++d) ch[d] = (directed ? (*directed)[k][d] : c) * cell;
+            const float diagonal[4] = {ch[kMinusX] + ch[kMinusZ], ch[kPlusX] + ch[kPlusZ], ch[kMinusX] + ch[kPlusZ],
+                                       ch[kPlusX] + ch[kMinusZ]};
+            for (int d = 0; d < 4; ++d) {
+                costs.axis[d] = ch[d];
+                costs.axisInverse[d] = 1.0f / (ch[d] * ch[d]);
+                costs.diagonal[d] = kSqrt2 * 0.5f * diagonal[d];
+                costs.diagonalInverse[d] = 1.0f / (costs.diagonal[d] * costs.diagonal[d]);
+            }
         }
-    float before[NavGrid::kTileCells * NavGrid::kTileCells];
-    for (int32_t y = 0; y < h; ++y)
-        for (int32_t x = 0; x < w; ++x) before[y * w + x] = job.phi[(y + 1) * kWindow + x + 1];
-
-    // Absolute below a cell's worth of potential, relative above: far from
-    // the goal a float's last bit is coarser than any absolute tolerance,
-    // and sweeping orders may round the fixed point differently.
-    const float tolerance = 1e-4f * cell;
-    const float relative = 1e-5f;
     job.settled = false;
-    for (int round = 0; round < kMaxRounds && !job.settled; ++round) {
-        float change = 0.0f;
+}
+
+void FieldSolver::sweep(std::span<Job* const> jobs) const {
+    // A round of four sweeps that moved nothing by more than what would wake
+    // a neighbour leaves a tile settled: navigation needs no finer answer,
+    // and most re-solves after small cost changes end after one round.
+    const float tolerance = kPropagationTolerance * mGrid.cellSize();
+    constexpr int32_t n = int32_t(NavGrid::kTileCells);
+    for (int round = 0; round < kMaxRounds; ++round) {
+        float change[kInterleave] = {};
+        bool any = false;
+        for (Job* job : jobs) any |= !job->settled;
+        if (!any) break;
         for (int order = 0; order < 4; ++order) {
             const bool flipX = order & 1, flipY = order & 2;
-            for (int32_t yy = 0; yy < h; ++yy) {
-                const int32_t y = flipY ? h - 1 - yy : yy;
-                float* row = &job.phi[(y + 1) * kWindow + 1];
-                for (int32_t xx = 0; xx < w; ++xx) {
-                    const int32_t x = flipX ? w - 1 - xx : xx;
-                    const int32_t k = y * w + x;
-                    const float* c = ch[k];
-                    float u;
-                    if (fixed[k] >= 0.0f) u = fixed[k];
-                    else if (!(c[0] < kInf)) u = kInf;
-                    else {
-                        u = updateCell(row + x, c);
+            for (int32_t yy = 0; yy < n; ++yy) {
+                const int32_t y = flipY ? n - 1 - yy : yy;
+                for (int32_t xx = 0; xx < n; ++xx) {
+                    const int32_t x = flipX ? n - 1 - xx : xx;
+                    const int32_t k = y * n + x;
+                    // The jobs' updates do not depend on each other.
+                    for (size_t q = 0; q < jobs.size(); ++q) {
+                        Job& job = *jobs[q];
+                        const CellMode mode = job.mode[k];
+                        if (job.settled || mode == kOutside) continue;
+                        float* at = &job.phi[(y + 1) * kWindow + x + 1];
+                        // Replacing (not taking the minimum) lets values
+                        // rise when costs rose.
+                        const float u = mode == kSolve ? updateCell(at, job.costs[k])
+                                        : mode == kFixed ? job.fixed[k] : kInf;
+                        change[q] = std::max(change[q], settlingChange(u, *at));
+                        *at = u;
                     }
-                    // Replacing (not taking the minimum) lets values rise
-                    // when costs rose; inf - inf is NaN, hence the test.
-                    if (u != row[x])
-                        change = std::max(change, std::isfinite(u) && std::isfinite(row[x])
-                                                      ? std::abs(u - row[x]) - relative * std::abs(u) : kInf);
-                    row[x] = u;
                 }
             }
         }
-        job.settled = change <= tolerance;
+        for (size_t q = 0; q < jobs.size(); ++q) jobs[q]->settled |= change[q] <= tolerance;
     }
+}
 
+void FieldSolver::finish(Job& job) const {
     // What changed along each edge wakes the neighbour across it.
-    const float wake = kPropagationTolerance * cell;
+    const CellRect r = mGrid.tileCells(job.tile);
+    const int32_t w = r.i1 - r.i0 + 1, h = r.j1 - r.j0 + 1;
+    const float wake = kPropagationTolerance * mGrid.cellSize();
     job.lowest = kInf;
     for (int e = 0; e < 4; ++e) job.edgeChanged[e] = false, job.edgeLow[e] = kInf;
     for (int32_t y = 0; y < h; ++y)
         for (int32_t x = 0; x < w; ++x) {
-            const float now = job.phi[(y + 1) * kWindow + x + 1], was = before[y * w + x];
+            const float now = job.phi[(y + 1) * kWindow + x + 1];
+            const float was = job.before[y * int32_t(NavGrid::kTileCells) + x];
             job.lowest = std::min(job.lowest, now);
             const bool changed = std::isfinite(now) && std::isfinite(was) ? std::abs(now - was) > wake : now != was;
             if (!changed) continue;
@@ -161,8 +187,15 @@ uint32_t FieldSolver::solve(std::span<PotentialField* const> fields, const CostF
         total += uint32_t(mJobs.size());
         // Solve every window from the values before the pass, then write all
         // back: no job reads what another writes.
-        core::parallelFor(uint32_t(mJobs.size()), threads,
-                          [&](uint32_t k) { solveJob(mJobs[k], *fields[mJobs[k].field], cost); });
+        core::parallelForRanges(uint32_t(mJobs.size()), kInterleave, threads, [&](core::IndexRange r) {
+            Job* group[kInterleave];
+            for (uint32_t k = r.begin; k < r.end; ++k) {
+                group[k - r.begin] = &mJobs[k];
+                prepare(mJobs[k], *fields[mJobs[k].field], cost);
+            }
+            sweep(std::span<Job* const>(group, r.end - r.begin));
+            for (uint32_t k = r.begin; k < r.end; ++k) finish(mJobs[k]);
+        });
         core::parallelFor(uint32_t(mJobs.size()), threads,
                           [&](uint32_t k) { writeBack(mJobs[k], *fields[mJobs[k].field]); });
         const uint32_t tx = mGrid.tilesX(), tz = mGrid.tilesZ();

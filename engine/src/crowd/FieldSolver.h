@@ -41,21 +41,43 @@ public:
                    uint32_t threads);
 
 private:
+    static constexpr uint32_t kCells = NavGrid::kTileCells * NavGrid::kTileCells;
     static constexpr uint32_t kWindow = NavGrid::kTileCells + 2;
+    /// Jobs swept together, cell by cell: a sweep is a chain of dependent
+    /// updates (each cell reads the one before), so on its own it waits on
+    /// every update's latency; independent tiles interleaved keep the core
+    /// busy instead.
+    static constexpr uint32_t kInterleave = 4;
+
+    /// What a cell's update needs besides its neighbours: for each direction
+    /// of travel, cost times spacing and its inverse square; the same for the
+    /// four diagonals (cells sqrt(2) apart, costing the mean of their axes).
+    struct CellCosts {
+        float axis[4], axisInverse[4];         // -x, +x, -z, +z
+        float diagonal[4], diagonalInverse[4]; // (-x,-z), (+x,+z), (-x,+z), (+x,-z)
+    };
+    enum CellMode : uint8_t { kSolve, kFixed, kWall, kOutside };
 
     /// One tile of one field in a pass: its window (the tile plus a ring of
-    /// ghost cells), and what solving it changed.
+    /// ghost cells, row stride kWindow, full size even for a tile the grid's
+    /// edge clips), its cells' costs and modes, and what solving it changed.
     struct Job {
         uint32_t field = 0;
         uint32_t tile = 0;
         float phi[kWindow * kWindow];
+        float before[kCells];
+        float fixed[kCells];
+        CellMode mode[kCells];
+        CellCosts costs[kCells];
         bool edgeChanged[4] = {}; ///< -X, +X, -Z, +Z
         float edgeLow[4] = {};    ///< lowest new value along each changed edge
         bool settled = true;
         float lowest = 0.0f;
     };
 
-    void solveJob(Job& job, const PotentialField& field, const CostField& cost) const;
+    void prepare(Job& job, const PotentialField& field, const CostField& cost) const;
+    void sweep(std::span<Job* const> jobs) const;
+    void finish(Job& job) const;
     void writeBack(Job& job, PotentialField& field) const;
 
     const NavGrid& mGrid;

@@ -1,5 +1,7 @@
 #include "Navigation.h"
 
+#include "tessera/core/ParallelFor.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -93,7 +95,10 @@ void Navigation::updateDensity(const AgentBins& bins, std::span<const glm::vec3>
     std::vector<uint32_t> recount(mDensityTiles);
     recount.insert(recount.end(), bins.occupiedTiles().begin(), bins.occupiedTiles().end());
     sortUnique(recount);
-    for (uint32_t tile : recount) mCost.recountTile(tile, bins.agentsIn(tile), positions, velocities);
+    // Each tile's recount writes only that tile's samples.
+    core::parallelFor(uint32_t(recount.size()), mSettings.threads, [&](uint32_t k) {
+        mCost.recountTile(recount[k], bins.agentsIn(recount[k]), positions, velocities);
+    });
     mDensityTiles.assign(bins.occupiedTiles().begin(), bins.occupiedTiles().end());
 
     std::vector<uint32_t> tiles;

@@ -46,7 +46,7 @@ struct CrowdSettings {
     /// spend per step over all goal groups after the initial solve. Bounds the
     /// cost of re-solving after density changes and craters; leftover work
     /// carries over to the next steps, nearest the goals first.
-    uint32_t fieldTileBudget = 192;
+    uint32_t fieldTileBudget = 128;
 
     // --- Craters ----------------------------------------------------------
     /// A fresh crater is impassable for this long (seconds)...
