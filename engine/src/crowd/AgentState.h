@@ -16,6 +16,7 @@ enum AgentFlag : uint8_t {
     kEscaping = 1u << 2,    ///< on impassable ground, walking off it
     kUnreachable = 1u << 3, ///< no route to the goal from here
     kArrived = 1u << 4,     ///< reached its goal during this step
+    kCrowded = 1u << 5,     ///< a neighbour close enough to touch it by the end of the step
 };
 
 struct AgentState {

@@ -98,6 +98,7 @@ Status Crowd::spawn(std::span<const SpawnPattern> spawns) {
     mIndexOf.resize(total);
     for (uint32_t i = 0; i < uint32_t(total); ++i) mIndexOf[i] = i;
     mLargestRadius = total ? largest : 0.0f;
+    for (float speed : a.preferredSpeed) mFastest = std::max(mFastest, speed);
     return {};
 }
 

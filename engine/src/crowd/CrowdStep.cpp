@@ -140,6 +140,10 @@ void Crowd::steer() {
     const NavGrid& grid = nav.grid();
     const float neighbourRadius2 = s.neighbourRadius * s.neighbourRadius;
     const float closeRadius = 0.5f * s.neighbourRadius, closeRadius2 = closeRadius * closeRadius;
+    // With cells as large as the close radius, looking close first saves
+    // nothing: one look over the whole radius.
+    const bool sparse = mHash->cellSize() >= closeRadius;
+    const float maxStep = mFastest * s.fleeSpeedFactor * s.timeStep;
     const float maxDelta = s.maxAcceleration * s.timeStep;
     AgentState& st = *mState;
     CrowdAgents& a = mAgents;
@@ -151,7 +155,7 @@ void Crowd::steer() {
         std::vector<VelocityLine> lines;
         for (uint32_t i = range.begin; i < range.end; ++i) {
             const glm::vec2 p = xz(a.position[i]);
-            uint8_t flags = st.flags[i] & ~(kOnWalkable | kEscaping | kUnreachable);
+            uint8_t flags = st.flags[i] & ~(kOnWalkable | kEscaping | kUnreachable | kCrowded);
             const bool walkable = cost.passableAt(p);
             if (walkable) flags |= kOnWalkable;
             const float speed = a.preferredSpeed[i];
@@ -186,11 +190,11 @@ void Crowd::steer() {
                 const glm::ivec2 c = grid.cellOf(p);
                 preferred = direction * speed * grid.speedFactor(grid.index(uint32_t(c.x), uint32_t(c.y)));
             }
-            st.flags[i] = flags;
-
-            // Standing agents stay put (others avoid them; separation moves
-            // them when pushed): no neighbours to look at.
+            // Standing agents stay put (others avoid them): no neighbours to
+            // look at here; separation looks at them all the same, as
+            // someone may be pushing.
             if (preferred == glm::vec2(0.0f) && a.velocity[i] == glm::vec2(0.0f)) {
+                st.flags[i] = flags | kCrowded;
                 st.nextVelocity[i] = glm::vec2(0.0f);
                 continue;
             }
@@ -213,10 +217,17 @@ void Crowd::steer() {
                 near[k] = {offset, a.velocity[j], a.radius[j]};
                 nearDistance[k] = d;
             };
-            mHash->forEachNear(p, closeRadius, [&](uint32_t j, glm::vec2 q) { consider(j, q, -1.0f, closeRadius2); });
-            if (found < cap)
-                mHash->forEachNear(p, s.neighbourRadius,
-                                   [&](uint32_t j, glm::vec2 q) { consider(j, q, closeRadius2, neighbourRadius2); });
+            if (!sparse) mHash->forEachNear(p, closeRadius, [&](uint32_t j, glm::vec2 q) { consider(j, q, -1.0f, closeRadius2); });
+            if (sparse || found < cap)
+                mHash->forEachNear(p, s.neighbourRadius, [&](uint32_t j, glm::vec2 q) {
+                    consider(j, q, sparse ? -1.0f : closeRadius2, neighbourRadius2);
+                });
+            // Whether anybody is near enough to touch it by the end of the
+            // step (both walking at most maxStep): separation looks only at
+            // such agents.
+            const float touch = a.radius[i] + mLargestRadius + 2.0f * maxStep;
+            if (found > 0 && nearDistance[0] < touch * touch) flags |= kCrowded;
+            st.flags[i] = flags;
             // Keep right of oncoming walkers: the nearest ones, and a stream
             // coming the other way a few metres ahead.
             const float preferredSpeed = glm::length(preferred);
@@ -338,7 +349,7 @@ void Crowd::separate() {
             for (uint32_t i = range.begin; i < range.end; ++i) {
                 glm::vec2 p = in[i];
                 const float r = a.radius[i];
-                if (neighbours) {
+                if (neighbours && (st.flags[i] & kCrowded)) {
                     glm::vec2 push(0.0f);
                     const float near = r + mLargestRadius + 2.0f * kQuerySlack;
                     mHash->forEachNear(p, near, [&](uint32_t j, glm::vec2 was) {

@@ -53,6 +53,8 @@ public:
         }
     }
 
+    /// The cell size of the last build (metres).
+    float cellSize() const { return 1.0f / mInverseCell; }
     /// Bytes held (for the memory figures).
     size_t bytes() const;
 

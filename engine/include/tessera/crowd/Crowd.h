@@ -135,6 +135,7 @@ private:
     std::unique_ptr<SpatialHash> mHash;
     size_t mSplatsSeen = 0;
     float mLargestRadius = 0.0f;
+    float mFastest = 0.0f; ///< the highest preferred speed
     double mTime = 0.0;
     double mNextDensity = 0.0;
     uint64_t mSteps = 0;
