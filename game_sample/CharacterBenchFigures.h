@@ -4,8 +4,8 @@
 /// the level matching the paper's amplification, Table 1's bytes and the
 /// compressed vertex's error for each asset of the crowd.
 
+#include "CharacterAssets.h"
 #include "CharacterBenchReport.h"
-#include "CharacterCrowd.h"
 
 #include <cstdint>
 #include <filesystem>

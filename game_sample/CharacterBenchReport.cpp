@@ -1,17 +1,12 @@
 #include "CharacterBenchReport.h"
 
+#include "BenchText.h"
 #include "tessera/core/JsonWriter.h"
 
 #include <cstdio>
 
 namespace tessera::demo {
 namespace {
-
-std::string format(const char* pattern, auto... args) {
-    char line[320];
-    std::snprintf(line, sizeof line, pattern, args...);
-    return line;
-}
 
 double ratio(double value, double reference) {
     return reference > 0.0 ? value / reference : 0.0;
@@ -25,11 +20,6 @@ uint64_t cageAndDisplacement(const CharacterAssetFigures& a) {
 
 double mib(uint64_t bytes) {
     return double(bytes) / (1024.0 * 1024.0);
-}
-
-void fixed(JsonWriter& json, const char* key, double value, int decimals) {
-    json.key(key);
-    json.valueFixed(value, decimals);
 }
 
 // The keys every per-asset object starts with.
@@ -168,9 +158,7 @@ const CharacterBenchRow* singlePassPartner(const std::vector<CharacterBenchRow>&
 
 std::string characterBenchJson(const CharacterBenchSummary& s) {
     JsonWriter json(true);
-    json.beginObject();
-    json.keyValue("format", "tessera-bench-characters");
-    json.keyValue("version", 1);
+    beginBenchDocument(json, "tessera-bench-characters", 1);
     json.keyValue("width", s.width);
     json.keyValue("height", s.height);
     json.keyValue("warmup_frames", s.warmupFrames);

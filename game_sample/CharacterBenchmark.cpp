@@ -1,6 +1,7 @@
 #include "CharacterBenchmark.h"
 
 #include "BackendSelection.h"
+#include "BenchSeries.h"
 #include "CharacterBenchFigures.h"
 #include "CharacterBenchReport.h"
 #include "DemoScene.h"
@@ -32,19 +33,6 @@ constexpr float kSharedMaxLevel = tessellator::ContinuousLevel::kMaxLevel;
 /// --character-level is not given: about 4.8x the shared level's triangles.
 constexpr float kHardwareLevel = 32.0f;
 
-struct Series {
-    double median = 0.0, min = 0.0, max = 0.0;
-};
-
-// Median of an even count is the mean of the middle two, as
-// profiler::summarize() defines it.
-Series series(std::vector<double> values) {
-    if (values.empty()) return {};
-    std::sort(values.begin(), values.end());
-    const size_t n = values.size();
-    return {(values[(n - 1) / 2] + values[n / 2]) / 2.0, values.front(), values.back()};
-}
-
 bool isPathPass(const std::string& name, backend::CharacterPath path) {
     if (path == backend::CharacterPath::TwoPass) return name == "character.skin" || name == "character.tessellate";
     return name == "character.singlePass";
@@ -75,13 +63,13 @@ void summarizeRow(const profiler::Profiler& profiler, uint64_t first, uint64_t e
         for (const auto& [f, ms] : m) v.push_back(ms);
         return v;
     };
-    const Series c = series(values(character));
+    const BenchSeries c = summarizeSeries(values(character));
     row.characterMsMedian = c.median;
     row.characterMsMin = c.min;
     row.characterMsMax = c.max;
-    row.gpuFrameMsMedian = series(values(frame)).median;
+    row.gpuFrameMsMedian = summarizeSeries(values(frame)).median;
     row.frames = static_cast<uint32_t>(character.size());
-    for (const std::string& name : order) row.passes.emplace_back(name, series(perPass[name]).median);
+    for (const std::string& name : order) row.passes.emplace_back(name, summarizeSeries(perPass[name]).median);
 }
 
 Status writeOutputs(const DemoOptions& options, const CharacterBenchSummary& summary) {
@@ -100,7 +88,7 @@ Status runCharacterBenchmark(const DemoOptions& options) {
     auto loaded = DemoScene::load(base, 1);
     if (!loaded) return loaded.error();
     terrain::Terrain& ground = loaded.value()->terrain();
-    CharacterCrowd* crowd = loaded.value()->crowd();
+    CharacterPopulation* crowd = loaded.value()->characters();
     if (!crowd || crowd->assets().empty())
         return fail("--bench characters: no characters to draw (--crowd 0 and no --model)");
 
@@ -160,7 +148,7 @@ Status runCharacterBenchmark(const DemoOptions& options) {
         session.setTerrainVisible(options.terrain);
         auto settings = session.resolveTessellation(run);
         if (!settings) return settings.error();
-        if (Status ok = session.createCharacters(*crowd); !ok) return ok.error();
+        if (Status ok = session.createCharacters(crowd->assets()); !ok) return ok.error();
 
         scene::Camera camera;
         camera.setPose(options.camera.value_or(crowd->orbitPose(kPoseSeconds)));
@@ -174,7 +162,7 @@ Status runCharacterBenchmark(const DemoOptions& options) {
                 const uint64_t rowStartNs = profiler.nowNs();
                 for (uint32_t f = 0; f < summary.warmupFrames + summary.frames; ++f, ++frameIndex) {
                     profiler.beginFrame(frameIndex);
-                    crowd->update(kPoseSeconds, camera, session.height(), top, level);
+                    crowd->update(kPoseSeconds, camera, {session.height(), top, level});
                     const backend::CharacterDrawInfo draw{crowd->items(), path, options.displacement};
                     session.renderFrame(frameIndex, camera, settings.value(), options.clearColor, false, false, &draw);
                     profiler.endFrame();
@@ -209,7 +197,7 @@ Status runCharacterBenchmark(const DemoOptions& options) {
     }
     profiler.clear();
     if (summary.rows.empty()) return fail("--bench characters: no backend could run");
-    for (const CrowdAsset& asset : crowd->assets())
+    for (const CrowdAsset& asset : crowd->assets().all())
         summary.assets.push_back(assetFigures(asset, shared, float(summary.paperLevel), float(summary.tableLevel)));
     return writeOutputs(options, summary);
 }

@@ -1,8 +1,6 @@
 #include "CharacterCrowd.h"
 
 #include "ContentLocator.h"
-#include "tessera/assets/GltfLoader.h"
-#include "tessera/character/AnimatedBounds.h"
 #include "tessera/core/Log.h"
 #include "tessera/profiler/CpuScope.h"
 
@@ -14,29 +12,9 @@
 namespace tessera::demo {
 namespace {
 
-constexpr uint32_t kFroblinSeeds = 3;       // content/characters/froblin_1..3.glb
+constexpr float kOrbitDistance = 5.0f;      // metres, unless --orbit-distance
 constexpr float kOrbitHeight = 1.6f;        // camera height above the site
-constexpr float kOrbitSpeed = 0.15f;        // radians per second
 constexpr float kLookHeight = 0.6f;         // the camera aims this high above the site
-// The orbit starts on the sun's side (the azimuth of FrameInfo's default sun,
-// atan2(0.4, 0.3)), so the first frames show lit faces.
-constexpr float kOrbitStart = 0.93f;
-
-float meanEdgeLength(const character::CageMesh& cage) {
-    double sum = 0.0;
-    const size_t n = cage.indices.size();
-    for (size_t t = 0; t + 2 < n; t += 3)
-        for (int e = 0; e < 3; ++e)
-            sum += glm::distance(cage.vertices[cage.indices[t + e]].position,
-                                 cage.vertices[cage.indices[t + (e + 1) % 3]].position);
-    return n ? float(sum / double(n)) : 0.0f;
-}
-
-int findClip(const character::CharacterAsset& asset, const char* name) {
-    for (size_t i = 0; i < asset.clips.size(); ++i)
-        if (asset.clips[i].name == name) return int(i);
-    return asset.clips.empty() ? -1 : 0;
-}
 
 // The flattest spot (smallest height change over a character-sized
 // neighbourhood) on a grid over the terrain's middle: crowds on a cliff face
@@ -61,39 +39,21 @@ glm::vec3 findSite(const terrain::Terrain& terrain) {
 
 } // namespace
 
-Status CharacterCrowd::addAsset(const std::string& file) {
-    TESSERA_CPU_SCOPE("load.character");
-    auto loaded = assets::loadCharacter(file);
-    if (!loaded) return loaded.error();
-    CrowdAsset entry;
-    entry.file = file;
-    entry.asset = std::move(loaded.value());
-    if (entry.asset.cage.indices.empty()) return fail(file, ": has no triangles to draw");
-    entry.box = character::animatedBounds(entry.asset);
-    entry.meanEdge = meanEdgeLength(entry.asset.cage);
-    mAssets.push_back(std::move(entry));
-    return {};
-}
-
 Result<std::unique_ptr<CharacterCrowd>> CharacterCrowd::load(const DemoOptions& options,
                                                              const terrain::Terrain& terrain) {
     std::unique_ptr<CharacterCrowd> crowd(new CharacterCrowd());
     crowd->mTerrain = &terrain;
     crowd->mSite = findSite(terrain);
-    crowd->mOrbitDistance = options.orbitDistance;
+    crowd->mOrbit = {crowd->mSite, options.orbitDistance.value_or(kOrbitDistance), kOrbitHeight, kLookHeight};
 
-    const uint32_t froblins = std::min(options.crowd, kFroblinSeeds);
-    for (uint32_t seed = 1; seed <= froblins; ++seed) {
-        auto file = locateContent(options.contentDir, "characters/froblin_" + std::to_string(seed) + ".glb");
-        if (!file) return file.error();
-        if (Status ok = crowd->addAsset(file.value().string()); !ok) return ok.error();
-    }
+    const uint32_t froblins = std::min(options.crowd, CharacterAssets::kFroblinSeeds);
+    if (Status ok = crowd->mAssets.addFroblins(options.contentDir, froblins); !ok) return ok.error();
     // CesiumMan is Khronos sample data the build copies from ../shared/testdata
     // when it is there; the scene goes on without it otherwise.
     uint32_t cesium = 0;
     if (options.crowd > 0) {
         if (auto file = locateContent(options.contentDir, "characters/CesiumMan/CesiumMan.gltf")) {
-            if (Status ok = crowd->addAsset(file.value().string()); !ok) return ok.error();
+            if (Status ok = crowd->mAssets.add(file.value().string()); !ok) return ok.error();
             cesium = 1;
         } else {
             log::info("CesiumMan not in the content directory (the build copies it from ../shared/testdata); "
@@ -102,7 +62,7 @@ Result<std::unique_ptr<CharacterCrowd>> CharacterCrowd::load(const DemoOptions& 
     }
     const uint32_t firstModel = uint32_t(crowd->mAssets.size());
     for (const std::string& model : options.models)
-        if (Status ok = crowd->addAsset(model); !ok) return ok.error();
+        if (Status ok = crowd->mAssets.add(model); !ok) return ok.error();
     crowd->populate(options, froblins, cesium, firstModel);
     return crowd;
 }
@@ -113,7 +73,6 @@ void CharacterCrowd::populate(const DemoOptions& options, uint32_t froblins, uin
         Member& m = mMembers.emplace_back();
         m.asset = asset;
         m.clip = clip;
-        m.pose = std::make_unique<character::Pose>(mAssets[asset].asset.skeleton);
         return m;
     };
     // Every third creature idles on the inner ring; the others walk circles
@@ -149,19 +108,14 @@ void CharacterCrowd::populate(const DemoOptions& options, uint32_t froblins, uin
         Member& m = add(a, mAssets[a].asset.clips.empty() ? -1 : 0);
         m.anchor = site + (alone ? glm::vec2(1.5f * (float(k) - 0.5f * float(models - 1)), 0.0f)
                                  : glm::vec2(-1.5f * float(k + 1), 0.8f));
-        m.angle = kOrbitStart;  // facing where the camera starts
+        m.angle = CameraOrbit::kStart;  // facing where the camera starts
     }
 }
 
-void CharacterCrowd::update(double seconds, const scene::Camera& camera, uint32_t viewportHeight, float maxLevel,
-                            std::optional<float> fixedLevel) {
+void CharacterCrowd::update(double seconds, const scene::Camera& camera, const CharacterLevels& levels) {
     TESSERA_CPU_SCOPE("characters.animate");
-    mItems.clear();
-    const float pixelsPerRadian = float(viewportHeight) / (2.0f * std::tan(0.5f * camera.verticalFov()));
-    const scene::Frustum frustum = camera.frustum();
-    for (size_t i = 0; i < mMembers.size(); ++i) {
-        Member& m = mMembers[i];
-        const CrowdAsset& asset = mAssets[m.asset];
+    mPoser.begin(camera, levels);
+    for (const Member& m : mMembers) {
         glm::vec2 at = m.anchor;
         float heading = m.angle;
         if (m.radius > 0.0f) {
@@ -173,40 +127,9 @@ void CharacterCrowd::update(double seconds, const scene::Camera& camera, uint32_
         }
         glm::mat4 world = glm::translate(glm::mat4(1.0f), glm::vec3(at.x, mTerrain->heightAt(at.x, at.y), at.y));
         world = glm::rotate(world, heading, glm::vec3(0, 1, 0));
-        // The compression box holds every pose the clips reach, so a character
-        // outside the view this frame can skip its pose and both passes.
-        if (!frustum.intersects(asset.box.transformed(world))) continue;
-
-        m.pose->reset();
-        if (m.clip >= 0) m.pose->apply(asset.asset.clips[size_t(m.clip)], float(seconds) + m.clipOffset);
-        m.pose->computeGlobals();
-        m.pose->palette(asset.asset.cage, m.palette);
-
-        float level = fixedLevel.value_or(0.0f);
-        if (!fixedLevel) {
-            const glm::vec3 centre = glm::vec3(world * glm::vec4(asset.box.center(), 1.0f));
-            const float distance = std::max(glm::distance(centre, camera.position()), 0.1f);
-            level = asset.meanEdge * pixelsPerRadian / distance / kTargetEdgePixels;
-        }
-        backend::CharacterDrawItem item;
-        item.character = m.asset < mHandles.size() ? mHandles[m.asset] : backend::CharacterHandle{};
-        item.world = world;
-        item.palette = m.palette;
-        item.tessLevel = std::clamp(level, 1.0f, maxLevel);
-        mItems.push_back(item);
+        if (mPoser.visible(mAssets[m.asset], world))
+            mPoser.add(mAssets, m.asset, world, m.clip, float(seconds) + m.clipOffset);
     }
-}
-
-scene::CameraPose CharacterCrowd::orbitPose(double seconds) const {
-    const float a = kOrbitStart + kOrbitSpeed * float(seconds);
-    glm::vec3 position = mSite + glm::vec3(mOrbitDistance * std::sin(a), 0.0f, mOrbitDistance * std::cos(a));
-    position.y = std::max(mSite.y + kOrbitHeight, mTerrain->heightAt(position.x, position.z) + 1.0f);
-    const glm::vec3 d = mSite + glm::vec3(0.0f, kLookHeight, 0.0f) - position;
-    scene::CameraPose pose;
-    pose.position = position;
-    pose.yaw = std::atan2(-d.x, -d.z);
-    pose.pitch = std::atan2(d.y, std::sqrt(d.x * d.x + d.z * d.z));
-    return pose;
 }
 
 } // namespace tessera::demo

@@ -2,6 +2,7 @@
 
 #include "BackendSelection.h"
 #include "CharacterBenchmark.h"
+#include "CrowdBenchmark.h"
 #include "DemoOutputs.h"
 #include "DemoScene.h"
 #include "RenderSession.h"
@@ -17,7 +18,6 @@ namespace tessera::demo {
 namespace {
 
 constexpr uint32_t kDefaultHeadlessFrames = 60;
-
 
 Status runFlythrough(const DemoOptions& options) {
     auto& profiler = profiler::Profiler::global();
@@ -42,13 +42,13 @@ Status runFlythrough(const DemoOptions& options) {
                    : std::string()));
 
     session.setTerrainVisible(options.terrain);
-    CharacterCrowd* crowd = scene.crowd();
-    if (crowd) {
+    CharacterPopulation* characters = scene.characters();
+    if (characters) {
         if (options.characterLevel && *options.characterLevel > session.maxCharacterLevel())
             return fail("--character-level ", formatNumber(*options.characterLevel), ": backend ",
                         session.capabilities().name, " tessellates up to level ",
                         formatNumber(session.maxCharacterLevel()));
-        if (Status ok = session.createCharacters(*crowd); !ok) return ok.error();
+        if (Status ok = session.createCharacters(characters->assets()); !ok) return ok.error();
     }
 
     scene::Camera camera;
@@ -62,19 +62,20 @@ Status runFlythrough(const DemoOptions& options) {
             camera.setPose(scene.cameraPose(frame));
             camera.setAspect(float(session.width()) / float(session.height()));
         }
-        backend::CharacterDrawInfo characters;
-        if (crowd) {
-            crowd->update(frame * DemoScene::kSecondsPerFrame, camera, session.height(), session.maxCharacterLevel(),
-                          options.characterLevel);
-            characters = {crowd->items(), options.characterPath, options.displacement};
+        backend::CharacterDrawInfo draw;
+        if (characters) {
+            characters->update(frame * DemoScene::kSecondsPerFrame, camera,
+                               {session.height(), session.maxCharacterLevel(), options.characterLevel});
+            draw = {characters->items(), options.characterPath, options.displacement};
         }
         const bool last = frame + 1 == frames;
         session.renderFrame(frame, camera, settings.value(), options.clearColor, options.wireframe,
-                            last && !options.screenshot.empty(), crowd ? &characters : nullptr);
+                            last && !options.screenshot.empty(), characters ? &draw : nullptr);
         profiler.endFrame();
     }
     const std::vector<uint8_t> pixels = session.finish();
     if (options.meteors) log::info(std::to_string(scene.impactsLanded()) + " meteor impacts landed");
+    if (const SimulatedCrowd* crowd = scene.simulatedCrowd()) std::printf("%s\n", crowd->summary().c_str());
     return writeOutputs(options, session, scene.terrain(), pixels, rendered);
 }
 
@@ -91,8 +92,9 @@ int runDemo(const DemoOptions& options) {
     }
     int code = 0;
     {
-        Status ran = options.bench.empty()          ? runFlythrough(options)
+        Status ran = options.bench.empty()           ? runFlythrough(options)
                      : options.bench == "characters" ? runCharacterBenchmark(options)
+                     : options.bench == "crowd-sim"  ? runCrowdBenchmark(options)
                                                      : runTerrainBenchmark(options);
         if (!ran) {
             log::error(ran.error().message);

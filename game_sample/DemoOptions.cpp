@@ -1,5 +1,7 @@
 #include "DemoOptions.h"
 
+#include "tessera/crowd/Crowd.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +17,25 @@ Result<uint32_t> parseCount(const std::string& flag, const std::string& text, ui
         return fail(flag, " expects a whole number from ", std::to_string(min), " to ", std::to_string(max), ", got \"",
                     text, "\"");
     return value;
+}
+
+// --agents: one count, or a comma list of counts for --bench crowd-sim.
+Result<std::vector<uint32_t>> parseAgents(const std::string& text) {
+    const Error bad = fail("--agents expects a whole number of agents from 1 to ",
+                           std::to_string(crowd::Crowd::kMaxAgents), " (a comma list with --bench crowd-sim), got \"",
+                           text, "\"");
+    std::vector<uint32_t> counts;
+    std::stringstream stream(text);
+    std::string part;
+    while (std::getline(stream, part, ',')) {
+        uint64_t value = 0;
+        auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+        if (ec != std::errc() || end != part.data() + part.size() || value < 1 || value > crowd::Crowd::kMaxAgents)
+            return bad;
+        counts.push_back(uint32_t(value));
+    }
+    if (counts.empty() || text.back() == ',') return bad;
+    return counts;
 }
 
 Result<glm::vec3> parseColor(const std::string& text) {
@@ -93,14 +114,26 @@ Scene:
   --scene NAME          terrain (the flythrough) | characters (a crowd of
                         tessellated, displaced, animated creatures and
                         CesiumMan walking on the terrain; the default when
-                        --model is given)
+                        --model is given) | crowd (the crowd simulation:
+                        --agents agents wandering between four goals, the
+                        --crowd-draw nearest in view drawn as creatures; the
+                        default when --agents or --crowd-draw is given)
   --model FILE          place a .gltf or .glb file in the characters scene,
                         playing its first animation (repeatable)
   --crowd N             generated creatures in the characters scene, with
                         CesiumMan (default 6; 0: only the --model files,
                         centred where the crowd would stand)
   --orbit-distance M    radius of the camera's circle around the characters
-                        (default 5 metres)
+                        (default 5 metres; 30 around the crowd's spawn)
+  --agents N            agents in the crowd scene (default 2000; refused
+                        when more than the machine's memory holds); with
+                        --bench crowd-sim a comma list of crowd sizes
+                        (default 1000,10000,65000)
+  --crowd-draw K        how many agents the crowd scene draws, the nearest in
+                        view (default 48; each is one character draw until
+                        instanced crowd rendering lands)
+  --threads N           the crowd simulation's threads (default 0: every
+                        hardware thread)
   --no-displacement     draw characters without their displacement maps
   --no-terrain          draw the characters alone on the clear colour
   --character-path P    two-pass (skin the cage once into 128-bit vertices,
@@ -112,11 +145,12 @@ Scene:
   --heightmap FILE      8- or 16-bit grayscale PNG height map (default: the
                         generated content/terrain/height.png)
   --content DIR         content directory
-  --seed N              camera path seed (default 1)
+  --seed N              camera path, meteor and crowd spawn seed (default 1)
   --camera x,y,z,yaw,pitch  fixed view (degrees) instead of the flythrough
   --wireframe           draw wireframe
   --meteors N           a meteor shower of N impacts during the flythrough,
                         deterministic by --seed; craters deform the terrain
+                        (in the crowd scene they land among the agents)
   --splat x,z,r[,depth] stamp a crater (metres) before the first frame
                         (repeatable; depth defaults to 0.22 r)
 
@@ -144,7 +178,8 @@ Output:
   --screenshot FILE     write the last frame as PNG
   --capture FILE        write a Chrome trace (Perfetto, chrome://tracing)
   --benchmark FILE      write per-pass min/median/max GPU ms as JSON
-  --warmup N            frames run first and left out of --benchmark (default 0)
+  --warmup N            frames run first and left out of --benchmark (default 0;
+                        with --bench crowd-sim: unmeasured steps, default 60)
   --dump-heights PREFIX after the last frame write the GPU and CPU copies of
                         the height map as PREFIX.gpu.png and PREFIX.cpu.png
   --bench terrain       run the Table 2 benchmark: a far and a close-up view,
@@ -165,6 +200,16 @@ Output:
                         (default 32; hulldomain only); reports GPU ms of the
                         character passes, amplification, Table 1 bytes and
                         the compressed vertex's error
+  --bench crowd-sim     run the crowd simulation benchmark (no GPU): on the
+                        generated terrain, for each --agents size, the time
+                        to create the crowd, then --warmup steps (default
+                        60) and --steps measured steps (default 300) with a
+                        crater among the agents every 3 simulated seconds;
+                        reports ms per step (total, fields, avoidance,
+                        integration: median, mean, max), memory per agent,
+                        overlaps, arrivals, stuck and fleeing agents, field
+                        tiles solved, threads (--threads) and the CPU
+  --steps N             --bench crowd-sim's measured steps
   --out FILE            where --bench writes its JSON (default: stdout)
   --out-dir DIR         where --bench writes its per-backend traces,
                         bench-<backend>.json, bench-characters-<backend>.json
@@ -176,6 +221,7 @@ Output:
 
 Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
     DemoOptions o;
+    bool crowdDrawGiven = false;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& flag = args[i];
         auto value = [&]() -> Result<std::string> {
@@ -211,8 +257,8 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         else if (flag == "--model") { TESSERA_TAKE(v); o.models.push_back(v); }
         else if (flag == "--scene") {
             TESSERA_TAKE(v);
-            if (v != "terrain" && v != "characters")
-                return fail("--scene expects terrain or characters, got \"", v, "\"");
+            if (v != "terrain" && v != "characters" && v != "crowd")
+                return fail("--scene expects terrain, characters or crowd, got \"", v, "\"");
             o.scene = v;
             o.sceneGiven = true;
         } else if (flag == "--character-path") {
@@ -228,7 +274,24 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
             o.characterLevel = n.value();
         }
         else if (flag == "--crowd") TESSERA_TAKE_COUNT(crowd, 0, 256)
-        else if (flag == "--orbit-distance") TESSERA_TAKE_NUMBER(orbitDistance, 0.25f, 10000.0f)
+        else if (flag == "--orbit-distance") {
+            TESSERA_TAKE(text);
+            auto n = parseNumber(flag, text, 0.25f, 10000.0f);
+            if (!n) return n.error();
+            o.orbitDistance = n.value();
+        }
+        else if (flag == "--agents") {
+            TESSERA_TAKE(v);
+            auto counts = parseAgents(v);
+            if (!counts) return counts.error();
+            o.agents = counts.value();
+        }
+        else if (flag == "--crowd-draw") {
+            TESSERA_TAKE_COUNT(crowdDraw, 0, 4096)
+            crowdDrawGiven = true;
+        }
+        else if (flag == "--threads") TESSERA_TAKE_COUNT(threads, 0, 1024)
+        else if (flag == "--steps") TESSERA_TAKE_COUNT(steps, 1, 10000000)
         else if (flag == "--backend") { TESSERA_TAKE(v); o.backend = v; }
         else if (flag == "--device") { TESSERA_TAKE(v); o.device = v; }
         else if (flag == "--plugin-dir") { TESSERA_TAKE(v); o.pluginDirs.push_back(v); }
@@ -242,8 +305,8 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         else if (flag == "--out-dir") { TESSERA_TAKE(v); o.benchOutDir = v; }
         else if (flag == "--bench") {
             TESSERA_TAKE(v);
-            if (v != "terrain" && v != "characters")
-                return fail("--bench expects \"terrain\" or \"characters\", got \"", v, "\"");
+            if (v != "terrain" && v != "characters" && v != "crowd-sim")
+                return fail("--bench expects \"terrain\", \"characters\" or \"crowd-sim\", got \"", v, "\"");
             o.bench = v;
         } else if (flag == "--terrain-mode") {
             TESSERA_TAKE(v);
@@ -280,7 +343,10 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         else if (flag == "--width") TESSERA_TAKE_COUNT(width, 16, 16384)
         else if (flag == "--height") TESSERA_TAKE_COUNT(height, 16, 16384)
         else if (flag == "--frames") TESSERA_TAKE_COUNT(frames, 1, 10000000)
-        else if (flag == "--warmup") TESSERA_TAKE_COUNT(warmup, 0, 1000000)
+        else if (flag == "--warmup") {
+            TESSERA_TAKE_COUNT(warmup, 0, 1000000)
+            o.warmupGiven = true;
+        }
         else if (flag == "--seed") TESSERA_TAKE_COUNT(seed, 0, UINT32_MAX)
         else if (flag == "--clear-color") {
             TESSERA_TAKE(v);
@@ -303,10 +369,17 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         return fail("--backend all compares the backends in --bench terrain or characters; pick one backend for the "
                     "demo");
     if (!o.models.empty() && !o.sceneGiven) o.scene = "characters";
+    const bool crowdFlags = !o.agents.empty() || crowdDrawGiven;
+    if (crowdFlags && !o.sceneGiven && o.bench.empty()) o.scene = "crowd";
+    if (crowdFlags && o.scene != "crowd" && o.bench != "crowd-sim")
+        return fail(!o.agents.empty() ? "--agents" : "--crowd-draw", " is for --scene crowd or --bench crowd-sim");
+    if (o.agents.size() > 1 && o.bench != "crowd-sim")
+        return fail("--agents takes one count in the crowd scene (a list is for --bench crowd-sim), got ",
+                    std::to_string(o.agents.size()));
     if (!o.models.empty() && o.scene != "characters")
-        return fail("--model places models in the characters scene; drop --scene terrain");
-    if (!o.bench.empty() && o.bench == "terrain" && o.scene == "characters")
-        return fail("--bench terrain measures the terrain; drop --scene characters");
+        return fail("--model places models in the characters scene; drop --scene ", o.scene);
+    if (o.bench == "terrain" && o.scene != "terrain")
+        return fail("--bench terrain measures the terrain; drop --scene ", o.scene);
     if (!o.tessTargetGiven) o.tessellation.targetPixels = terrain::defaultTargetPixels(o.tessellation.metric);
     if (o.window && !o.screenshot.empty() && o.frames == 0)
         return fail("--screenshot with --window needs --frames N to know which frame to capture");

@@ -34,6 +34,7 @@ struct DemoOptions {
     uint32_t height = 720;
     uint32_t frames = 0;                ///< 0: the mode's default
     uint32_t warmup = 0;
+    bool warmupGiven = false;           ///< --warmup was given (--bench crowd-sim takes 0 as none)
     uint32_t seed = 1;
     glm::vec3 clearColor{0.55f, 0.68f, 0.85f};
     std::optional<scene::CameraPose> camera; ///< --camera fixes the view
@@ -54,22 +55,35 @@ struct DemoOptions {
     uint32_t meteors = 0;                         ///< --meteors N
     std::vector<terrain::CraterSplat> splats;     ///< --splat x,z,radius[,depth], before the first frame
 
-    /// --scene terrain|characters. "characters" (the default when --model is
-    /// given) walks a crowd of generated creatures, CesiumMan and every
-    /// --model on the terrain, with the camera circling them.
+    /// --scene terrain|characters|crowd. "characters" (the default when
+    /// --model is given) walks a crowd of generated creatures, CesiumMan and
+    /// every --model on the terrain, with the camera circling them. "crowd"
+    /// (the default when --agents or --crowd-draw is given) simulates
+    /// --agents agents and draws the --crowd-draw nearest in view.
     std::string scene = "terrain";
     bool sceneGiven = false;
     std::vector<std::string> models;    ///< --model FILE (repeatable): any .gltf or .glb
     uint32_t crowd = 6;                 ///< --crowd N: generated creatures (0: only the --model files, no CesiumMan)
-    float orbitDistance = 5.0f;         ///< --orbit-distance M: the characters scene's camera circle
+    /// --orbit-distance M: the camera circle's radius; unset: 5 m in the
+    /// characters scene, 30 m in the crowd scene.
+    std::optional<float> orbitDistance;
     bool displacement = true;           ///< --no-displacement draws the bare interpolated cage
     bool terrain = true;                ///< --no-terrain: characters alone on the clear colour (crack tests, captures)
     backend::CharacterPath characterPath = backend::CharacterPath::TwoPass; ///< --character-path
     std::optional<float> characterLevel; ///< --character-level L; unset: from each character's size on screen
 
-    /// --bench terrain (the Table 2 benchmark) or characters (two-pass vs
-    /// single-pass, amplification, Table 1, compression error) instead of
-    /// the flythrough.
+    /// --agents N (the crowd scene's agents; unset: 2000) or, with --bench
+    /// crowd-sim, a comma list of crowd sizes (unset: 1000,10000,65000). Each
+    /// from 1 to crowd::Crowd::kMaxAgents.
+    std::vector<uint32_t> agents;
+    uint32_t crowdDraw = 48;            ///< --crowd-draw K: agents drawn in the crowd scene, the nearest in view
+    uint32_t threads = 0;               ///< --threads N: the crowd's threads (0: every hardware thread)
+    uint32_t steps = 0;                 ///< --steps N: --bench crowd-sim's measured steps (0: its default)
+
+    /// --bench terrain (the Table 2 benchmark), characters (two-pass vs
+    /// single-pass, amplification, Table 1, compression error) or crowd-sim
+    /// (the crowd simulation's step time, memory and behaviour; no GPU)
+    /// instead of the flythrough.
     std::string bench;
     std::string benchOut;               ///< --out FILE (default: stdout)
     /// --out-dir DIR: where --bench writes one Chrome trace per backend

@@ -1,5 +1,6 @@
 #include "DemoScene.h"
 
+#include "CharacterCrowd.h"
 #include "ContentLocator.h"
 #include "tessera/profiler/CpuScope.h"
 #include "tessera/scene/Camera.h"
@@ -19,18 +20,24 @@ constexpr double kMeteorWindowSeconds = 60.0;
 
 } // namespace
 
-Result<std::unique_ptr<DemoScene>> DemoScene::load(const DemoOptions& options, uint32_t frames) {
-    TESSERA_CPU_SCOPE("load.terrain");
+Result<terrain::HeightField> loadDemoHeightField(const DemoOptions& options) {
     std::filesystem::path path = options.heightmap;
     if (path.empty()) {
         auto located = locateContent(options.contentDir, "terrain/height.png");
         if (!located) return located.error();
         path = located.value();
     }
-    auto field = terrain::loadHeightMapPng(path);
-    if (!field) return field.error();
+    return terrain::loadHeightMapPng(path);
+}
+
+Result<std::unique_ptr<DemoScene>> DemoScene::load(const DemoOptions& options, uint32_t frames) {
     std::unique_ptr<DemoScene> scene(new DemoScene());
-    scene->mTerrain = std::make_unique<terrain::Terrain>(std::move(field.value()));
+    {
+        TESSERA_CPU_SCOPE("load.terrain");
+        auto field = loadDemoHeightField(options);
+        if (!field) return field.error();
+        scene->mTerrain = std::make_unique<terrain::Terrain>(std::move(field.value()));
+    }
     terrain::Terrain& ground = *scene->mTerrain;
     for (const auto& splat : options.splats) ground.splat(splat);
 
@@ -44,34 +51,45 @@ Result<std::unique_ptr<DemoScene>> DemoScene::load(const DemoOptions& options, u
     if (options.scene == "characters") {
         auto crowd = CharacterCrowd::load(options, ground);
         if (!crowd) return crowd.error();
-        scene->mCrowd = std::move(crowd.value());
+        scene->mCharacters = std::move(crowd.value());
+    } else if (options.scene == "crowd") {
+        auto crowd = SimulatedCrowd::create(options, ground);
+        if (!crowd) return crowd.error();
+        scene->mSimulated = crowd.value().get();
+        scene->mCharacters = std::move(crowd.value());
     }
-
-    if (options.meteors > 0) {
-        // Spread over the run (its last frame included), or over the first
-        // minute of an open-ended windowed run.
-        const double duration = std::min(double(frames > 1 ? frames - 1 : 0) * kSecondsPerFrame, kMeteorWindowSeconds);
-        terrain::MeteorShowerSettings shower;
-        shower.count = options.meteors;
-        shower.seed = options.seed;
-        shower.startSeconds = 0.05 * duration;
-        shower.durationSeconds = 0.9 * duration;
-        shower.regionMin = pathSettings.regionMin;
-        shower.regionMax = pathSettings.regionMax;
-        const DemoScene& self = *scene;
-        scene->mImpacts = terrain::scheduleMeteorShower(shower, [&self](double seconds) {
-            scene::Camera camera;
-            camera.setPose(self.cameraPose(uint32_t(seconds / kSecondsPerFrame)));
-            const glm::vec3 ahead = camera.position() + camera.forward() * kMeteorAimDistance;
-            return glm::vec2(ahead.x, ahead.z);
-        });
-    }
+    if (options.meteors > 0) scene->scheduleMeteors(options, frames);
     return scene;
+}
+
+void DemoScene::scheduleMeteors(const DemoOptions& options, uint32_t frames) {
+    // Spread over the run (its last frame included), or over the first
+    // minute of an open-ended windowed run.
+    const double duration = std::min(double(frames > 1 ? frames - 1 : 0) * kSecondsPerFrame, kMeteorWindowSeconds);
+    terrain::MeteorShowerSettings shower;
+    shower.count = options.meteors;
+    shower.seed = options.seed;
+    shower.startSeconds = 0.05 * duration;
+    shower.durationSeconds = 0.9 * duration;
+    shower.regionMax = mTerrain->field().worldSize();
+    if (mSimulated) {
+        // Among the agents: anywhere on the spawn disc, where they start.
+        const crowd::Region& spawn = mSimulated->layout().spawn;
+        shower.scatter = spawn.halfSize.x;
+        mImpacts = terrain::scheduleMeteorShower(shower, [&spawn](double) { return spawn.center; });
+        return;
+    }
+    mImpacts = terrain::scheduleMeteorShower(shower, [this](double seconds) {
+        scene::Camera camera;
+        camera.setPose(cameraPose(uint32_t(seconds / kSecondsPerFrame)));
+        const glm::vec3 ahead = camera.position() + camera.forward() * kMeteorAimDistance;
+        return glm::vec2(ahead.x, ahead.z);
+    });
 }
 
 scene::CameraPose DemoScene::cameraPose(uint32_t frame) const {
     if (mFixedPose) return *mFixedPose;
-    if (mCrowd) return mCrowd->orbitPose(double(frame) * kSecondsPerFrame);
+    if (mCharacters) return mCharacters->orbitPose(double(frame) * kSecondsPerFrame);
     return mPath->sample(double(frame) * kSecondsPerFrame);
 }
 
@@ -79,6 +97,7 @@ void DemoScene::update(uint32_t frame) {
     const double now = double(frame) * kSecondsPerFrame;
     while (mNextImpact < mImpacts.size() && mImpacts[mNextImpact].timeSeconds <= now)
         mTerrain->splat(mImpacts[mNextImpact++].splat);
+    if (mSimulated) mSimulated->step();
 }
 
 } // namespace tessera::demo

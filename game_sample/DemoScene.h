@@ -2,12 +2,14 @@
 /// @file DemoScene.h
 /// The demo's world: the terrain (CPU copy and derived data), the scripted
 /// camera flight over it, the meteor shower that deforms it and, in the
-/// characters scene, the crowd walking on it.
+/// characters and crowd scenes, the characters walking on it.
 
-#include "CharacterCrowd.h"
+#include "CharacterPopulation.h"
 #include "DemoOptions.h"
+#include "SimulatedCrowd.h"
 #include "tessera/core/Result.h"
 #include "tessera/scene/CameraPath.h"
+#include "tessera/terrain/HeightField.h"
 #include "tessera/terrain/MeteorShower.h"
 #include "tessera/terrain/Terrain.h"
 
@@ -17,33 +19,44 @@
 
 namespace tessera::demo {
 
+/// The height map the options name: --heightmap, else the generated
+/// content's terrain/height.png.
+Result<terrain::HeightField> loadDemoHeightField(const DemoOptions& options);
+
 class DemoScene {
 public:
     /// The flythrough advances a fixed step per frame, not wall time, so a
     /// given seed and frame index always give the same picture on any machine.
     static constexpr double kSecondsPerFrame = 1.0 / 30.0;
 
-    /// Loads the height map (--heightmap or the generated content), builds the
-    /// terrain, applies --splat craters and schedules --meteors impacts over
-    /// `frames` frames; with --scene characters, loads the crowd.
+    /// Loads the height map (loadDemoHeightField), builds the terrain,
+    /// applies --splat craters, loads the characters (--scene characters) or
+    /// creates the crowd (--scene crowd), and schedules --meteors impacts
+    /// over `frames` frames.
     static Result<std::unique_ptr<DemoScene>> load(const DemoOptions& options, uint32_t frames);
 
     terrain::Terrain& terrain() { return *mTerrain; }
-    /// The crowd of the characters scene; null in the terrain scene.
-    CharacterCrowd* crowd() { return mCrowd.get(); }
+    /// The characters of the characters or crowd scene; null in the terrain scene.
+    CharacterPopulation* characters() { return mCharacters.get(); }
+    /// The simulated crowd of the crowd scene (the same object as
+    /// characters()); null in the other scenes.
+    SimulatedCrowd* simulatedCrowd() { return mSimulated; }
     /// The camera at a frame: --camera when given, else the flythrough (or,
-    /// in the characters scene, a slow circle around the crowd).
+    /// in the characters and crowd scenes, a slow circle around them).
     scene::CameraPose cameraPose(uint32_t frame) const;
-    /// Lands every impact due by `frame` on the terrain's CPU copy; the
-    /// renderer takes them as pending splats for the GPU copy.
+    /// Lands every impact due by `frame` on the terrain's CPU copy (the
+    /// renderer takes them as pending splats for the GPU copy), then steps
+    /// the crowd once, which sees the new craters.
     void update(uint32_t frame);
     uint32_t impactsLanded() const { return mNextImpact; }
 
 private:
     DemoScene() = default;
+    void scheduleMeteors(const DemoOptions& options, uint32_t frames);
 
     std::unique_ptr<terrain::Terrain> mTerrain;
-    std::unique_ptr<CharacterCrowd> mCrowd;
+    std::unique_ptr<CharacterPopulation> mCharacters;
+    SimulatedCrowd* mSimulated = nullptr;
     std::optional<scene::CameraPath> mPath;
     std::optional<scene::CameraPose> mFixedPose;
     std::vector<terrain::MeteorImpact> mImpacts;

@@ -103,16 +103,16 @@ Result<terrain::TessellationSettings> RenderSession::resolveTessellation(const D
     return settings;
 }
 
-Status RenderSession::createCharacters(CharacterCrowd& crowd) {
+Status RenderSession::createCharacters(CharacterAssets& assets) {
     TESSERA_CPU_SCOPE("load.characterUpload");
     std::vector<backend::CharacterHandle> handles;
-    for (const CrowdAsset& asset : crowd.assets()) {
+    for (const CrowdAsset& asset : assets.all()) {
         auto handle = mSelected->backend->createCharacter({&asset.asset, asset.box});
         if (!handle) return fail(asset.file, ": ", handle.error().message);
         handles.push_back(handle.value());
         mCharacters.push_back(handle.value());
     }
-    crowd.bind(std::move(handles));
+    assets.bind(std::move(handles));
     return {};
 }
 

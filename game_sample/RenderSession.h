@@ -4,7 +4,7 @@
 /// a window: what the flythrough and the benchmark share.
 
 #include "BackendSelection.h"
-#include "CharacterCrowd.h"
+#include "CharacterAssets.h"
 #include "DemoOptions.h"
 #include "tessera/gpu/FrameScheduler.h"
 #include "tessera/gpu/RenderTarget.h"
@@ -39,10 +39,10 @@ public:
     /// the default mode, and a clear error for a mode or level it cannot draw.
     Result<terrain::TessellationSettings> resolveTessellation(const DemoOptions& options) const;
 
-    /// Uploads every asset of `crowd` to the backend and binds the handles
+    /// Uploads every asset of `assets` to the backend and binds the handles
     /// (destroyed with the session). An asset the backend cannot draw is an
     /// error naming its file.
-    Status createCharacters(CharacterCrowd& crowd);
+    Status createCharacters(CharacterAssets& assets);
     /// The largest character tessellation level the backend draws.
     float maxCharacterLevel() const { return capabilities().maxTessFactor; }
 

@@ -1,5 +1,6 @@
 #include "TerrainBenchReport.h"
 
+#include "BenchText.h"
 #include "tessera/core/JsonWriter.h"
 
 #include <algorithm>
@@ -93,16 +94,6 @@ std::string terrainBenchJson(const std::vector<TerrainBenchRecord>& records) {
     json.endArray();
     return json.str() + "\n";
 }
-
-namespace {
-
-std::string format(const char* pattern, auto... args) {
-    char line[256];
-    std::snprintf(line, sizeof line, pattern, args...);
-    return line;
-}
-
-} // namespace
 
 std::string terrainBenchTable(const std::vector<TerrainBenchRecord>& records) {
     std::string out = format("%-26s %-11s %-6s %-11s %-10s %10s %7s %9s %9s %9s %9s\n", "device", "backend", "view",

@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,15 +16,6 @@ using namespace tessera;
 using namespace tessera::test;
 
 namespace {
-
-/// The log's error lines ("tessera: error: ...").
-std::vector<std::string> errorLines(const std::string& output) {
-    std::vector<std::string> lines;
-    std::istringstream in(output);
-    for (std::string line; std::getline(in, line);)
-        if (line.find("tessera: error:") != std::string::npos) lines.push_back(line);
-    return lines;
-}
 
 std::string testdata(const std::string& relative) {
     return (sharedTestdataDir() / relative).string();

@@ -3,6 +3,7 @@
 /// Runs tessera-demo as a child process and captures its output.
 
 #include <cstdio>
+#include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <vector>
@@ -44,6 +45,15 @@ inline ProcessResult runDemo(const std::vector<std::string>& args) {
     const int status = pclose(pipe);
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
+}
+
+/// The log's error lines ("tessera: error: ...") in a run's output.
+inline std::vector<std::string> errorLines(const std::string& output) {
+    std::vector<std::string> lines;
+    std::istringstream in(output);
+    for (std::string line; std::getline(in, line);)
+        if (line.find("tessera: error:") != std::string::npos) lines.push_back(line);
+    return lines;
 }
 
 } // namespace tessera::test

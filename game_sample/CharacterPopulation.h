@@ -1,0 +1,31 @@
+#pragma once
+/// @file CharacterPopulation.h
+/// What a scene with characters gives the frame loop: the assets to upload,
+/// the frame's draw items and the camera circling them. The characters scene
+/// (CharacterCrowd) and the crowd scene (SimulatedCrowd) implement it.
+
+#include "CharacterAssets.h"
+#include "CharacterPoser.h"
+#include "tessera/backend/CharacterDesc.h"
+#include "tessera/scene/Camera.h"
+#include "tessera/scene/CameraPose.h"
+
+#include <span>
+
+namespace tessera::demo {
+
+class CharacterPopulation {
+public:
+    virtual ~CharacterPopulation() = default;
+
+    /// The assets to upload; RenderSession::createCharacters binds their handles.
+    virtual CharacterAssets& assets() = 0;
+    /// Poses the characters in view of `camera` at `seconds` and makes this
+    /// frame's draw items.
+    virtual void update(double seconds, const scene::Camera& camera, const CharacterLevels& levels) = 0;
+    virtual std::span<const backend::CharacterDrawItem> items() const = 0;
+    /// The scene's camera at `seconds` (unless --camera fixes it).
+    virtual scene::CameraPose orbitPose(double seconds) const = 0;
+};
+
+} // namespace tessera::demo

@@ -1,0 +1,187 @@
+#include "SimulatedCrowd.h"
+
+#include "CrowdSetup.h"
+#include "tessera/core/Log.h"
+#include "tessera/profiler/CpuScope.h"
+#include "tessera/profiler/Profiler.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtx/norm.hpp>
+
+namespace tessera::demo {
+namespace {
+
+constexpr float kStrideRadius = 0.4f;   // agent radius the gait is measured at (metres)
+constexpr float kRadiusSpread = 0.05f;  // agent radii within +-5% of it
+constexpr float kSpeedSpread = 0.1f;    // preferred speeds within +-10% of the natural speed
+constexpr float kOrbitDistance = 30.0f; // metres, unless --orbit-distance
+// Camera height per metre of orbit distance. At 30 m out the view looks 42
+// degrees down and the nearest agents in view stand about 28 m away, where
+// CharacterPoser's level is about 1: each drawn creature stays near its
+// 5,000 cage triangles (a level just above 1 makes 13 of each), which keeps
+// lavapipe frames with 48 creatures well under a second.
+constexpr float kOrbitRise = 0.9f;
+constexpr float kOrbitMinHeight = 4.0f; // at least this high, to see over the agents
+constexpr float kOrbitClearance = 0.5f; // over ground rising under it: this share of the height
+constexpr float kLookHeight = 0.7f;     // the camera aims this high above the spawn's centre
+
+std::string describeGait(const CrowdGait& gait, const CharacterAssets& assets) {
+    char text[160];
+    std::snprintf(text, sizeof text, "crowd gait: %.2f m per walk cycle at radius %.2f m, natural speed %.2f m/s;",
+                  double(gait.walkStrideLength), double(gait.strideRadius), double(gait.naturalSpeed));
+    std::string line = text;
+    for (size_t i = 0; i < gait.creatures.size(); ++i) {
+        const CreatureGait& c = gait.creatures[i];
+        std::snprintf(text, sizeof text, " %s %.2f m drawn x%.2f (%.2f m)",
+                      std::filesystem::path(assets[i].file).filename().c_str(), double(c.height), double(c.scale),
+                      double(c.height * c.scale));
+        line += text;
+    }
+    return line;
+}
+
+} // namespace
+
+Result<std::unique_ptr<SimulatedCrowd>> SimulatedCrowd::create(const DemoOptions& options,
+                                                               const terrain::Terrain& terrain) {
+    std::unique_ptr<SimulatedCrowd> self(new SimulatedCrowd());
+    self->mTerrain = &terrain;
+    self->mDrawCount = options.crowdDraw;
+    const uint32_t agents = options.agents.empty() ? kDefaultAgents : options.agents.front();
+    if (Status ok = self->mAssets.addFroblins(options.contentDir, CharacterAssets::kFroblinSeeds); !ok)
+        return ok.error();
+    auto gait = measureCrowdGait(self->mAssets, kCreatureHeight, kStrideRadius);
+    if (!gait) return gait.error();
+    self->mGait = std::move(gait.value());
+    log::info(describeGait(self->mGait, self->mAssets));
+
+    auto planned = planCrowd(terrain, self->settings(options.threads), agents, self->spawnPattern(options.seed));
+    if (!planned) return planned.error();
+    self->mLayout = std::move(planned.value().layout);
+    self->mCrowd = std::move(planned.value().crowd);
+    log::info("crowd created in " + std::to_string(std::lround(planned.value().createMs)) + " ms");
+
+    const float distance = options.orbitDistance.value_or(kOrbitDistance);
+    const glm::vec2 centre = self->mLayout.spawn.center;
+    const float height = std::max(kOrbitMinHeight, kOrbitRise * distance);
+    self->mOrbit = {{centre.x, terrain.heightAt(centre.x, centre.y), centre.y},
+                    distance,
+                    height,
+                    kLookHeight,
+                    kOrbitClearance * height};
+    const std::string drawn = self->mDrawCount ? "the " + std::to_string(self->mDrawCount) +
+                                                     " nearest in view drawn with the character path until instanced "
+                                                     "crowd rendering lands"
+                                               : "none drawn (--crowd-draw 0)";
+    std::printf("crowd: %u agents on %s, %s\n", agents, describeLayout(self->mLayout).c_str(), drawn.c_str());
+    std::fflush(stdout);
+    return self;
+}
+
+crowd::CrowdSettings SimulatedCrowd::settings(uint32_t threads) {
+    crowd::CrowdSettings settings;
+    settings.threads = threads;
+    mGait.apply(settings);
+    // A stream walking at the creatures' own pace is a free walk.
+    settings.flowSpeed = mGait.naturalSpeed;
+    settings.agentHeight = 0.0f;
+    mReach.clear();
+    for (size_t i = 0; i < mAssets.size(); ++i) {
+        const scene::Aabb& box = mAssets[i].box;
+        const float scale = mGait.creatures[i].scale;
+        const glm::vec2 far =
+            glm::max(glm::abs(glm::vec2(box.min.x, box.min.z)), glm::abs(glm::vec2(box.max.x, box.max.z)));
+        mReach.push_back({glm::length(far) * scale, box.min.y * scale, box.max.y * scale});
+        settings.agentHeight = std::max(settings.agentHeight, box.max.y * scale * (1.0f + kRadiusSpread));
+    }
+    return settings;
+}
+
+crowd::SpawnPattern SimulatedCrowd::spawnPattern(uint32_t seed) const {
+    crowd::SpawnPattern pattern;
+    pattern.seed = seed;
+    pattern.radiusMin = mGait.strideRadius * (1.0f - kRadiusSpread);
+    pattern.radiusMax = mGait.strideRadius * (1.0f + kRadiusSpread);
+    pattern.speedMin = mGait.naturalSpeed * (1.0f - kSpeedSpread);
+    pattern.speedMax = mGait.naturalSpeed * (1.0f + kSpeedSpread);
+    return pattern;
+}
+
+void SimulatedCrowd::step() {
+    {
+        TESSERA_CPU_SCOPE("crowd.step");
+        mCrowd->step();
+    }
+    mStepMs += mCrowd->lastTimings().total();
+    const crowd::CrowdStats& s = mCrowd->stats();
+    auto& profiler = profiler::Profiler::global();
+    const uint64_t frame = profiler.currentFrame(), now = profiler.nowNs();
+    profiler.recordCounter({"crowd agents", frame, now, double(s.agents)});
+    profiler.recordCounter({"crowd walking", frame, now, double(s.walking)});
+    profiler.recordCounter({"crowd fleeing", frame, now, double(s.fleeing)});
+    profiler.recordCounter({"crowd field tiles solved", frame, now, double(s.fieldTilesSolved)});
+}
+
+std::string SimulatedCrowd::summary() const {
+    const crowd::CrowdStats& s = mCrowd->stats();
+    const uint64_t steps = mCrowd->stepCount();
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "crowd: %llu steps (%.1f s), %u agents: %u walking, %u fleeing, %u stuck, %llu arrivals; a step "
+                  "took %.2f ms on average",
+                  static_cast<unsigned long long>(steps), mCrowd->time(), s.agents, s.walking, s.fleeing, s.stuck,
+                  static_cast<unsigned long long>(s.arrivals), steps ? mStepMs / double(steps) : 0.0);
+    return text;
+}
+
+glm::mat4 SimulatedCrowd::agentWorld(uint32_t agent, uint32_t creature) const {
+    const crowd::CrowdAgents& agents = mCrowd->agents();
+    // An agent's stride grows with its radius (CrowdSettings::strideRadius),
+    // so its creature does too.
+    const float scale = mGait.creatures[creature].scale * agents.radius[agent] / mGait.strideRadius;
+    glm::mat4 world = glm::translate(glm::mat4(1.0f), agents.position[agent]);
+    world = glm::rotate(world, agents.heading[agent], glm::vec3(0, 1, 0));
+    return glm::scale(world, glm::vec3(scale));
+}
+
+void SimulatedCrowd::update(double, const scene::Camera& camera, const CharacterLevels& levels) {
+    TESSERA_CPU_SCOPE("crowd.draw");
+    mPoser.begin(camera, levels);
+    if (mDrawCount == 0) return;
+    const scene::Frustum frustum = camera.frustum();
+    const crowd::CrowdAgents& agents = mCrowd->agents();
+    const glm::vec3 eye = camera.position();
+    const uint32_t creatures = uint32_t(mAssets.size());
+    // The crowd culls by tiles; each candidate's creature is then tested on
+    // its own, with a box that holds it at any heading, so only agents really
+    // in view compete for the drawn slots.
+    mCulled.clear();
+    mCrowd->cull(frustum, mCulled);
+    mNearest.clear();
+    for (uint32_t i : mCulled) {
+        const Reach& reach = mReach[agents.id[i] % creatures];
+        const float size = agents.radius[i] / mGait.strideRadius;
+        const glm::vec3 p = agents.position[i];
+        const scene::Aabb box{p + size * glm::vec3(-reach.radius, reach.bottom, -reach.radius),
+                              p + size * glm::vec3(reach.radius, reach.top, reach.radius)};
+        if (frustum.intersects(box)) mNearest.emplace_back(glm::distance2(p, eye), i);
+    }
+    // Nearest first (ties by index, so the choice is deterministic).
+    const size_t drawn = std::min<size_t>(mDrawCount, mNearest.size());
+    std::partial_sort(mNearest.begin(), mNearest.begin() + ptrdiff_t(drawn), mNearest.end());
+    for (size_t k = 0; k < drawn; ++k) {
+        const uint32_t i = mNearest[k].second;
+        const uint32_t creature = agents.id[i] % creatures;
+        const CreatureGait& gait = mGait.creatures[creature];
+        const int clip = agents.clip[i] == crowd::AgentClip::Walk ? gait.walkClip : gait.idleClip;
+        const float duration = clip >= 0 ? mAssets[creature].asset.clips[size_t(clip)].duration() : 0.0f;
+        mPoser.add(mAssets, creature, agentWorld(i, creature), clip, agents.phase[i] * duration);
+    }
+}
+
+} // namespace tessera::demo
