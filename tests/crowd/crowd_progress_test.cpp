@@ -68,7 +68,7 @@ TEST(CrowdProgress, NobodyStaysStuckInABottleneck) {
                 double(worstStuck));
     EXPECT_EQ(made, arrived.size());
     // Queueing is slow progress, not none. The group takes about 100 s to
-    // drain through the gap; the last in line wait about a quarter of that
+    // drain through the gap; the last in line wait up to a third of that
     // before they move a metre. A deadlock would never end.
     EXPECT_LT(worstStuck, 45.0f);
 }

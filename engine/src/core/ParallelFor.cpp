@@ -36,7 +36,9 @@ void parallelForRanges(uint32_t count, uint32_t grain, uint32_t threadCount,
     if (count == 0) return;
     grain = std::max(grain, 1u);
     const uint32_t chunks = (count - 1) / grain + 1;
-    const uint32_t threads = threadCount ? threadCount : hardwareThreads();
+    // More threads than the hardware has cannot run at once (TBB would
+    // refuse the extra workers, noisily); the cut is the same either way.
+    const uint32_t threads = std::min(threadCount ? threadCount : hardwareThreads(), hardwareThreads());
     auto run = [&](uint32_t chunk) { body({chunk * grain, std::min(count, (chunk + 1) * grain)}); };
     if (threads == 1 || chunks == 1) {
         for (uint32_t chunk = 0; chunk < chunks; ++chunk) run(chunk);
