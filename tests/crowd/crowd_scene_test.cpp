@@ -31,7 +31,11 @@ TEST(CrowdScene, OneSceneNodeWhoseBoundsFollowTheAgents) {
     const scene::Aabb box = graph.node(node).worldBounds;
     EXPECT_EQ(graph.node(node).kind, 7u);
     const CrowdAgents& a = crowd->agents();
-    for (size_t i = 0; i < a.size(); ++i) ASSERT_TRUE(box.contains(a.position[i])) << "agent " << i;
+    for (size_t i = 0; i < a.size(); ++i) {
+        ASSERT_TRUE(box.contains(a.position[i])) << "agent " << a.id[i];
+        // Re-sorted in memory twice by now; ids still find their agents.
+        ASSERT_EQ(crowd->indexOf(a.id[i]), i);
+    }
     crowd.reset();
     EXPECT_FALSE(graph.isAlive(node)) << "a crowd takes its node with it";
 }

@@ -20,10 +20,6 @@ float Region::distanceTo(glm::vec2 point) const {
     return glm::length(glm::max(glm::abs(d) - halfSize, glm::vec2(0.0f)));
 }
 
-float Region::area() const {
-    return shape == Shape::Disc ? std::numbers::pi_v<float> * halfSize.x * halfSize.x : 4.0f * halfSize.x * halfSize.y;
-}
-
 glm::vec2 Region::pointAt(float u, float v) const {
     if (shape == Shape::Rect) return center + halfSize * (2.0f * glm::vec2(u, v) - 1.0f);
     // Square-root radius: uniform over the disc's area.

@@ -66,8 +66,6 @@ public:
     bool walkable(glm::vec2 p) const;
     /// Walking speed on cell `index` relative to flat ground: (0, 1], 0 when impassable.
     float speedFactor(uint32_t index) const;
-    /// The slope limit as a tangent.
-    float maxSlopeTangent() const { return mMaxSlope; }
 
     /// Recomputes the cells whose slope can have changed after the terrain
     /// changed inside world rectangle [min, max] (a crater). Returns them.

@@ -25,8 +25,6 @@ struct Region {
     bool contains(glm::vec2 point) const;
     /// Distance from `point` to the region (0 inside), metres.
     float distanceTo(glm::vec2 point) const;
-    /// Area in square metres.
-    float area() const;
     /// Corners of the bounding rectangle.
     glm::vec2 boundsMin() const { return center - halfSize; }
     glm::vec2 boundsMax() const { return center + halfSize; }
