@@ -43,9 +43,9 @@ struct AgentState;
 ///     splatted into the cost; the potential fields settle within the tile
 ///     budget;
 ///  2. avoidance: each agent's preferred velocity comes from its group's
-///     field (or fleeing, or walking off impassable ground), and local
-///     avoidance picks the best candidate velocity among its nearest
-///     neighbours;
+///     field (or fleeing, or walking off impassable ground), and ORCA picks
+///     the velocity nearest it that avoids its nearest neighbours and the
+///     walls;
 ///  3. integration: agents move, overlaps left over are pushed apart and out
 ///     of walls, agents stand on Terrain::heightAt, headings turn at a
 ///     bounded rate, clips and phases advance with distance walked, arrivals
