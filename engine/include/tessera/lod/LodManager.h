@@ -1,0 +1,70 @@
+#pragma once
+/// @file LodManager.h
+/// The crowd's level-of-detail manager: per frame, the parameters every
+/// backend's GPU culling and binning read (thresholds, and the cuts and
+/// level cap that keep the frame within its budget), and the CPU reference
+/// of the selection, which the null backend draws from and the tests
+/// compare the GPU with. See docs/CROWD.md, "Rendering".
+///
+/// The per-instance rule is shader::tsLodUpdate (CrowdLod.h), shared with
+/// the GPU passes; this class adds what needs the whole frame: the budget.
+/// It keeps every instance's state word by id, as each backend keeps its
+/// own copy on the GPU, so both evolve alike.
+
+#include "tessera/lod/LodFrame.h"
+#include "tessera/lod/LodInstance.h"
+#include "tessera/lod/LodPolicy.h"
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace tessera::lod {
+
+class LodManager {
+public:
+    /// The policy must validate (LodPolicy::validate); asserts otherwise.
+    explicit LodManager(const LodPolicy& policy = {}, uint32_t threads = 0);
+
+    const LodPolicy& policy() const { return mPolicy; }
+    /// Takes effect at the next update; states are kept.
+    void setPolicy(const LodPolicy& policy);
+
+    /// Selects this frame's tiers for `instances` seen from `view`:
+    /// culls, sorts by size with hysteresis, fits the budget, advances the
+    /// cross-fades. Instance `character` fields index `characters`.
+    const LodFrame& update(std::span<const LodInstance> instances, std::span<const LodCharacter> characters,
+                           const LodView& view);
+    /// The last update's answer.
+    const LodFrame& frame() const { return mFrame; }
+
+    /// The state word (CrowdLod.h) instance `id` ended the last update with.
+    uint32_t state(uint32_t id) const;
+    /// Forgets every instance (as after a teleport of the camera: nothing
+    /// fades in).
+    void reset() { mState.clear(); }
+
+private:
+    /// Per instance, from the first pass over the frame.
+    struct Seen {
+        float pixels = 0.0f;
+        uint32_t candidate = TS_LOD_NONE; ///< TS_LOD_NONE: out of view
+        uint32_t tier = TS_LOD_NONE;      ///< after the budget, filled tier by tier
+    };
+
+    void classify(std::span<const LodInstance> instances);
+    void fitBudget(std::span<const LodInstance> instances, std::span<const LodCharacter> characters);
+    void advance(std::span<const LodInstance> instances, std::span<const LodCharacter> characters);
+    uint64_t nearTriangles(float pixels, const LodCharacter& character, float cap) const;
+
+    LodPolicy mPolicy;
+    uint32_t mThreads = 0;
+    std::vector<uint32_t> mState;
+    std::vector<Seen> mSeen;
+    /// Triangles of one cage triangle at each odd segment count 1..63 (the
+    /// fractional-odd pattern's triangle count depends only on it).
+    std::array<uint32_t, 64> mTrianglesPerCageTriangle{};
+    LodFrame mFrame;
+};
+
+} // namespace tessera::lod

@@ -1,0 +1,232 @@
+#include "tessera/lod/LodManager.h"
+
+#include "LodAdmission.h"
+#include "tessera/core/ParallelFor.h"
+#include "tessera/tessellator/Tessellator.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace tessera::lod {
+namespace {
+
+using detail::AdmissionItem;
+
+constexpr uint32_t kGrain = 4096;
+
+bool continuesFadeFrom(uint32_t state, uint32_t tier) {
+    // A fade with two or more frames left still draws the copy after this
+    // frame's update, unless the instance changes tier again (then the copy
+    // goes: counting it is conservative).
+    return shader::tsLodStatePrevious(state) == tier && shader::tsLodStateTier(state) != tier &&
+           shader::tsLodStateFade(state) >= 2u;
+}
+
+} // namespace
+
+LodManager::LodManager(const LodPolicy& policy, uint32_t threads) : mPolicy(policy), mThreads(threads) {
+    assert(policy.validate().ok());
+    for (uint32_t n = 1; n < mTrianglesPerCageTriangle.size(); n += 2) {
+        tessellator::TessFactors factors;
+        const float level = float(n);
+        factors.outer = {level, level, level, level};
+        factors.inner = {level, level};
+        mTrianglesPerCageTriangle[n] = tessellator::Tessellator::countTriangles(
+            tessellator::Domain::Triangle, tessellator::Partitioning::FractionalOdd, factors);
+        mTrianglesPerCageTriangle[n + 1] = mTrianglesPerCageTriangle[n];
+    }
+}
+
+void LodManager::setPolicy(const LodPolicy& policy) {
+    assert(policy.validate().ok());
+    mPolicy = policy;
+}
+
+uint32_t LodManager::state(uint32_t id) const {
+    return id < mState.size() ? mState[id] : shader::tsLodStateNone();
+}
+
+uint64_t LodManager::nearTriangles(float pixels, const LodCharacter& character, float cap) const {
+    shader::CrowdLodParams params = mFrame.params;
+    params.levels.x = cap;
+    const float level = shader::tsLodLevel(pixels, character.levelPerPixel, params);
+    // Fractional-odd spacing rounds the level up to an odd segment count.
+    uint32_t segments = uint32_t(std::ceil(level));
+    segments = std::min<uint32_t>(segments | 1u, 63u);
+    return uint64_t(character.cageTriangles) * mTrianglesPerCageTriangle[segments];
+}
+
+const LodFrame& LodManager::update(std::span<const LodInstance> instances, std::span<const LodCharacter> characters,
+                                   const LodView& view) {
+    LodFrame& f = mFrame;
+    for (auto& tier : f.tiers) tier.clear();
+    f.counts = {};
+    f.inView = f.dropped = f.budgetDemoted = f.tierChanges = 0;
+    shader::CrowdLodParams& p = f.params;
+    for (size_t i = 0; i < 6; ++i) p.planes[i] = view.frustum.planes()[i];
+    p.eye = glm::vec4(view.eye, view.pixelsPerRadian);
+    p.thresholds = {mPolicy.nearPixels, mPolicy.farPixels, mPolicy.hysteresis, float(mPolicy.fadeFrames)};
+    p.cuts = {0.0f, 0.0f, 0.0f, mPolicy.fadeFrames > 0 ? 1.0f : 0.0f};
+    p.levels = {std::max(1.0f, view.maxLevel), mPolicy.fixedLevel, 0.0f, 0.0f};
+
+    uint32_t maxId = 0;
+    for (const LodInstance& instance : instances) maxId = std::max(maxId, instance.id);
+    if (!instances.empty() && mState.size() <= maxId) mState.resize(size_t(maxId) + 1, shader::tsLodStateNone());
+
+    classify(instances);
+    fitBudget(instances, characters);
+    advance(instances, characters);
+    return f;
+}
+
+void LodManager::classify(std::span<const LodInstance> instances) {
+    mSeen.resize(instances.size());
+    const shader::CrowdLodParams& p = mFrame.params;
+    core::parallelForRanges(uint32_t(instances.size()), kGrain, mThreads, [&](core::IndexRange range) {
+        for (uint32_t i = range.begin; i < range.end; ++i) {
+            const LodInstance& instance = instances[i];
+            Seen& seen = mSeen[i];
+            seen.tier = TS_LOD_NONE;
+            if (!shader::tsLodInFrustum(instance.sphere, p)) {
+                seen.candidate = TS_LOD_NONE;
+                continue;
+            }
+            seen.pixels = shader::tsLodPixels(instance.sphere, p);
+            seen.candidate = shader::tsLodCandidate(seen.pixels, shader::tsLodStateTier(mState[instance.id]), p);
+        }
+    });
+}
+
+void LodManager::fitBudget(std::span<const LodInstance> instances, std::span<const LodCharacter> characters) {
+    shader::CrowdLodParams& p = mFrame.params;
+    const LodBudget& budget = mPolicy.budget;
+    const float maxLevel = p.levels.x;
+    std::vector<AdmissionItem> items;
+
+    // Fills `items` with tier `tier`'s candidates among the instances no
+    // finer tier took, and sums the copies the others leave in it.
+    auto gather = [&](uint32_t tier, float cap, uint64_t& forcedCost, uint64_t& forcedCount) {
+        items.clear();
+        forcedCost = forcedCount = 0;
+        for (uint32_t i = 0; i < instances.size(); ++i) {
+            const Seen& seen = mSeen[i];
+            if (seen.candidate == TS_LOD_NONE) continue;
+            const uint32_t state = mState[instances[i].id];
+            const LodCharacter& character = characters[instances[i].character];
+            const uint64_t cost = tier == TS_LOD_NEAR ? nearTriangles(seen.pixels, character, cap) : 1u;
+            const bool wasHere = shader::tsLodStateTier(state) == tier;
+            const bool candidate = seen.tier == TS_LOD_NONE && (tier == TS_LOD_FAR || seen.candidate <= tier);
+            if (candidate) {
+                items.push_back({seen.pixels, instances[i].id, i, cost, wasHere, continuesFadeFrom(state, tier)});
+            } else if ((wasHere && seen.tier != tier) || continuesFadeFrom(state, tier)) {
+                // Leaving the tier by its size, or for a finer one: a fading copy.
+                forcedCost += cost;
+                ++forcedCount;
+            }
+        }
+    };
+    auto admitTier = [&](uint32_t tier, float cap, const detail::AdmissionLimits& limits, bool fades) {
+        uint64_t forcedCost = 0, forcedCount = 0;
+        gather(tier, cap, forcedCost, forcedCount);
+        return detail::admit(items, forcedCost, forcedCount, limits, fades);
+    };
+    auto take = [&](uint32_t tier, const detail::Admission& admission) {
+        for (uint32_t k = 0; k < admission.admitted; ++k) mSeen[items[k].index].tier = tier;
+    };
+    auto resetTiers = [&] {
+        for (Seen& seen : mSeen) seen.tier = TS_LOD_NONE;
+    };
+
+    const detail::AdmissionLimits nearLimits{budget.maxTessellatedTriangles, budget.maxNearInstances};
+    const detail::AdmissionLimits middleLimits{UINT64_MAX, budget.maxMiddleInstances};
+    const detail::AdmissionLimits farLimits{UINT64_MAX, budget.maxFarInstances};
+    for (bool fades : {mPolicy.fadeFrames > 0, false}) {
+        resetTiers();
+        float cap = maxLevel;
+        detail::Admission near = admitTier(TS_LOD_NEAR, cap, nearLimits, fades);
+        if (near.fits && near.admitted == 0 && !items.empty()) {
+            // Even the largest alone is over the triangle budget: lower the
+            // frame's level cap, one odd segment count at a time, until it fits.
+            for (int n = std::min(63, int(std::floor(maxLevel))) | 1; n >= 1; n -= 2) {
+                const detail::Admission capped = admitTier(TS_LOD_NEAR, float(n), nearLimits, fades);
+                if (capped.admitted > 0) {
+                    cap = float(n);
+                    near = capped;
+                    break;
+                }
+            }
+            if (near.admitted == 0) near = admitTier(TS_LOD_NEAR, cap, nearLimits, fades);
+        }
+        take(TS_LOD_NEAR, near);
+        const detail::Admission middle = admitTier(TS_LOD_MIDDLE, cap, middleLimits, fades);
+        take(TS_LOD_MIDDLE, middle);
+        const detail::Admission far = admitTier(TS_LOD_FAR, cap, farLimits, fades);
+        take(TS_LOD_FAR, far);
+        p.cuts = {near.cut, middle.cut, far.cut, fades ? 1.0f : 0.0f};
+        p.levels.x = cap;
+        // Fading copies of budget demotions that do not fit: demote at once.
+        if (!fades || (near.fits && middle.fits && far.fits)) break;
+    }
+}
+
+void LodManager::advance(std::span<const LodInstance> instances, std::span<const LodCharacter> characters) {
+    struct Chunk {
+        std::array<std::vector<LodDraw>, kTierCount> tiers;
+        std::array<LodTierCount, kTierCount> counts{};
+        uint32_t inView = 0, dropped = 0, demoted = 0, changes = 0;
+    };
+    const uint32_t count = uint32_t(instances.size());
+    std::vector<Chunk> chunks((count + kGrain - 1) / kGrain);
+    const shader::CrowdLodParams& p = mFrame.params;
+    core::parallelForRanges(count, kGrain, mThreads, [&](core::IndexRange range) {
+        Chunk& chunk = chunks[range.begin / kGrain];
+        for (uint32_t i = range.begin; i < range.end; ++i) {
+            const LodInstance& instance = instances[i];
+            const Seen& seen = mSeen[i];
+            const uint32_t old = mState[instance.id];
+            const uint32_t next = shader::tsLodUpdate(old, instance.sphere, p);
+            mState[instance.id] = next;
+            if (seen.candidate == TS_LOD_NONE) continue;
+            ++chunk.inView;
+            const uint32_t tier = shader::tsLodStateTier(next);
+            if (tier == TS_LOD_NONE) {
+                ++chunk.dropped;
+                continue;
+            }
+            if (tier != seen.candidate) ++chunk.demoted;
+            const uint32_t last = shader::tsLodStateTier(old);
+            if (last != TS_LOD_NONE && last != tier) ++chunk.changes;
+            const LodCharacter& character = characters[instance.character];
+            const float level = shader::tsLodLevel(seen.pixels, character.levelPerPixel, p);
+            const float coverage = shader::tsLodCoverage(next, p);
+            auto draw = [&](uint32_t t, float share, bool fadingOut) {
+                const bool near = t == TS_LOD_NEAR;
+                chunk.tiers[t].push_back({i, near ? level : 1.0f, share, fadingOut});
+                LodTierCount& c = chunk.counts[t];
+                ++c.instances;
+                if (share < 1.0f) ++c.fading;
+                c.triangles += near  ? nearTriangles(seen.pixels, character, p.levels.x)
+                               : t == TS_LOD_MIDDLE ? character.cageTriangles
+                                                    : character.farTriangles;
+            };
+            draw(tier, coverage, false);
+            if (shader::tsLodStateFade(next) > 0u) draw(shader::tsLodStatePrevious(next), 1.0f - coverage, true);
+        }
+    });
+    LodFrame& f = mFrame;
+    for (const Chunk& chunk : chunks) {
+        for (uint32_t t = 0; t < kTierCount; ++t) {
+            f.tiers[t].insert(f.tiers[t].end(), chunk.tiers[t].begin(), chunk.tiers[t].end());
+            f.counts[t].instances += chunk.counts[t].instances;
+            f.counts[t].fading += chunk.counts[t].fading;
+            f.counts[t].triangles += chunk.counts[t].triangles;
+        }
+        f.inView += chunk.inView;
+        f.dropped += chunk.dropped;
+        f.budgetDemoted += chunk.demoted;
+        f.tierChanges += chunk.changes;
+    }
+}
+
+} // namespace tessera::lod

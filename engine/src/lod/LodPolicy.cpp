@@ -1,0 +1,44 @@
+#include "tessera/lod/LodPolicy.h"
+
+#include "CrowdLod.h"
+
+#include <cmath>
+#include <string>
+
+namespace tessera::lod {
+
+LodPolicy LodPolicy::forDevice(DeviceClass device) {
+    LodPolicy policy;
+    if (device == DeviceClass::Cpu) {
+        // lavapipe on two cores draws about 4 to 5 million triangles a second
+        // (docs/CROWD.md, "Budgets"): a few tessellated creatures, a few
+        // dozen cages and a few thousand far meshes keep a frame well under
+        // a second whatever the scene.
+        policy.budget.maxNearInstances = 4;
+        policy.budget.maxTessellatedTriangles = 400'000;
+        policy.budget.maxMiddleInstances = 48;
+        policy.budget.maxFarInstances = 3000;
+    }
+    return policy;
+}
+
+Status LodPolicy::validate() const {
+    auto bad = [](const std::string& what) { return Error{"LOD policy: " + what}; };
+    if (!(nearPixels > 0.0f) || !std::isfinite(nearPixels)) return bad("the near threshold must be a positive number of pixels");
+    if (!(farPixels > 0.0f) || !(farPixels <= nearPixels))
+        return bad("the far threshold must be positive and at most the near threshold (" + std::to_string(nearPixels) +
+                   " px)");
+    if (!(hysteresis >= 0.0f && hysteresis < 1.0f)) return bad("the hysteresis must be in [0, 1)");
+    if (fadeFrames > TS_LOD_MAX_FADE_FRAMES)
+        return bad("a cross-fade lasts at most " + std::to_string(TS_LOD_MAX_FADE_FRAMES) + " frames");
+    if (!(targetEdgePixels > 0.0f) || !std::isfinite(targetEdgePixels))
+        return bad("the target edge length must be a positive number of pixels");
+    if (!(fixedLevel >= 0.0f && fixedLevel <= 64.0f)) return bad("a fixed level must be in [1, 64] (0: from the size)");
+    if (budget.maxTessellatedTriangles == 0)
+        return bad("a tessellated-triangle budget of zero draws nothing tessellated; give at least one cage's worth");
+    if (budget.maxNearInstances == 0 && budget.maxMiddleInstances == 0 && budget.maxFarInstances == 0)
+        return bad("a budget of zero instances in every tier draws nothing");
+    return {};
+}
+
+} // namespace tessera::lod

@@ -1,0 +1,294 @@
+// The LOD manager's CPU reference: tiers from the size on screen, hysteresis,
+// cross-fades and the frame budget (docs/CROWD.md, "Rendering").
+#include "tessera/core/Random.h"
+#include "tessera/lod/LodManager.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+using namespace tessera;
+using lod::LodCharacter;
+using lod::LodInstance;
+using lod::LodManager;
+using lod::LodPolicy;
+
+namespace {
+
+constexpr float kRadius = 0.8f; // a goblin's bounding sphere
+constexpr uint32_t kHeight = 720;
+
+/// Camera at the origin looking down -Z, 60 degrees, 16:9.
+scene::Camera camera() {
+    scene::Camera c;
+    c.setPosition({0, 0, 0});
+    return c;
+}
+
+lod::LodView view(const scene::Camera& c = camera(), float maxLevel = 64.0f) {
+    return lod::LodView::fromCamera(c, kHeight, maxLevel);
+}
+
+float pixelsPerRadian() { return float(kHeight) / (2.0f * std::tan(0.5f * scene::Camera::kDefaultVerticalFov)); }
+
+/// The distance at which the sphere covers `pixels`.
+float distanceFor(float pixels) { return 2.0f * kRadius * pixelsPerRadian() / pixels; }
+
+LodInstance at(float distance, uint32_t id, float x = 0.0f) {
+    return {glm::vec4(x, 0.0f, -distance, kRadius), id, 0};
+}
+
+std::vector<LodCharacter> creature() {
+    // 5,000 cage triangles, a 3 cm mean edge, a 300-triangle far mesh.
+    return {{LodCharacter::levelPerPixelFor(0.03f, kRadius, 1.0f), 5000, 300}};
+}
+
+uint32_t tierOf(const lod::LodFrame& frame, uint32_t instance) {
+    for (uint32_t t = 0; t < lod::kTierCount; ++t)
+        for (const lod::LodDraw& d : frame.tiers[t])
+            if (d.instance == instance && !d.fadingOut) return t;
+    return TS_LOD_NONE;
+}
+
+LodPolicy noFade() {
+    LodPolicy policy;
+    policy.fadeFrames = 0;
+    return policy;
+}
+
+} // namespace
+
+TEST(LodManager, TiersFollowTheSizeOnScreen) {
+    LodManager lods(noFade(), 1);
+    const auto characters = creature();
+    const std::vector<LodInstance> instances = {
+        at(distanceFor(300.0f), 0), at(distanceFor(129.0f), 1), at(distanceFor(127.0f), 2),
+        at(distanceFor(41.0f), 3),  at(distanceFor(39.0f), 4),  at(-5.0f, 5) /* behind the camera */,
+        at(20.0f, 6, 200.0f) /* far to the side */};
+    const lod::LodFrame& f = lods.update(instances, characters, view());
+    EXPECT_EQ(tierOf(f, 0), TS_LOD_NEAR);
+    EXPECT_EQ(tierOf(f, 1), TS_LOD_NEAR);
+    EXPECT_EQ(tierOf(f, 2), TS_LOD_MIDDLE);
+    EXPECT_EQ(tierOf(f, 3), TS_LOD_MIDDLE);
+    EXPECT_EQ(tierOf(f, 4), TS_LOD_FAR);
+    EXPECT_EQ(tierOf(f, 5), TS_LOD_NONE);
+    EXPECT_EQ(tierOf(f, 6), TS_LOD_NONE);
+    EXPECT_EQ(f.inView, 5u);
+    // The near level follows the size: 300 px at 3 cm per 1.6 m.
+    EXPECT_NEAR(f.tiers[TS_LOD_NEAR][0].level, 300.0f * 0.03f / 1.6f, 1e-3f);
+    EXPECT_EQ(f.counts[TS_LOD_MIDDLE].triangles, 2u * 5000u);
+    EXPECT_EQ(f.counts[TS_LOD_FAR].triangles, 300u);
+}
+
+TEST(LodManager, HysteresisKeepsAnOscillatingInstanceInOneTier) {
+    // An agent walking back and forth across the near threshold, 5% either
+    // side (the hysteresis is 15%): once it has crossed, it stays.
+    LodManager lods(noFade(), 1);
+    const auto characters = creature();
+    uint32_t changes = 0, last = TS_LOD_NONE;
+    for (int frame = 0; frame < 600; ++frame) {
+        const float pixels = 128.0f * (1.0f + 0.05f * std::sin(float(frame) * 0.1f));
+        const LodInstance instance = at(distanceFor(pixels), 7);
+        const uint32_t tier = tierOf(lods.update({&instance, 1}, characters, view()), 0);
+        if (last != TS_LOD_NONE && tier != last) ++changes;
+        last = tier;
+    }
+    EXPECT_LE(changes, 1u);
+    // Without hysteresis the same walk flips every half period.
+    LodPolicy bare = noFade();
+    bare.hysteresis = 0.0f;
+    LodManager flicker(bare, 1);
+    uint32_t flips = 0;
+    last = TS_LOD_NONE;
+    for (int frame = 0; frame < 600; ++frame) {
+        const float pixels = 128.0f * (1.0f + 0.05f * std::sin(float(frame) * 0.1f));
+        const LodInstance instance = at(distanceFor(pixels), 7);
+        const uint32_t tier = tierOf(flicker.update({&instance, 1}, characters, view()), 0);
+        if (last != TS_LOD_NONE && tier != last) ++flips;
+        last = tier;
+    }
+    EXPECT_GT(flips, 10u);
+}
+
+TEST(LodManager, ATierChangeCrossFadesOverTheFadeFrames) {
+    LodPolicy policy;
+    policy.fadeFrames = 8;
+    LodManager lods(policy, 1);
+    const auto characters = creature();
+    LodInstance instance = at(distanceFor(60.0f), 3);
+    lods.update({&instance, 1}, characters, view());
+    ASSERT_EQ(tierOf(lods.frame(), 0), TS_LOD_MIDDLE);
+    instance = at(distanceFor(30.0f), 3); // now far
+    float previousCoverage = 0.0f;
+    for (uint32_t frame = 0; frame < policy.fadeFrames; ++frame) {
+        const lod::LodFrame& f = lods.update({&instance, 1}, characters, view());
+        ASSERT_EQ(f.tiers[TS_LOD_FAR].size(), 1u);
+        ASSERT_EQ(f.tiers[TS_LOD_MIDDLE].size(), 1u) << "frame " << frame;
+        const lod::LodDraw in = f.tiers[TS_LOD_FAR][0], out = f.tiers[TS_LOD_MIDDLE][0];
+        EXPECT_FALSE(in.fadingOut);
+        EXPECT_TRUE(out.fadingOut);
+        EXPECT_FLOAT_EQ(in.coverage + out.coverage, 1.0f);
+        EXPECT_GT(in.coverage, previousCoverage);
+        previousCoverage = in.coverage;
+        EXPECT_EQ(f.counts[TS_LOD_MIDDLE].fading, 1u);
+    }
+    const lod::LodFrame& done = lods.update({&instance, 1}, characters, view());
+    EXPECT_TRUE(done.tiers[TS_LOD_MIDDLE].empty());
+    ASSERT_EQ(done.tiers[TS_LOD_FAR].size(), 1u);
+    EXPECT_EQ(done.tiers[TS_LOD_FAR][0].coverage, 1.0f);
+}
+
+TEST(LodManager, ComingIntoViewDoesNotFade) {
+    LodManager lods(LodPolicy{}, 1);
+    const auto characters = creature();
+    LodInstance instance = at(-10.0f, 1);
+    lods.update({&instance, 1}, characters, view());
+    EXPECT_EQ(lods.frame().inView, 0u);
+    instance = at(10.0f, 1);
+    const lod::LodFrame& f = lods.update({&instance, 1}, characters, view());
+    EXPECT_EQ(f.counts[TS_LOD_MIDDLE].instances, 1u);
+    EXPECT_EQ(f.counts[TS_LOD_MIDDLE].fading, 0u);
+}
+
+TEST(LodManager, TheBudgetCapsNearInstancesAndTessellatedTriangles) {
+    LodPolicy policy;
+    policy.budget.maxNearInstances = 3;
+    policy.budget.maxTessellatedTriangles = 2'000'000;
+    LodManager lods(policy, 1);
+    const auto characters = creature();
+    std::vector<LodInstance> instances;
+    for (uint32_t i = 0; i < 40; ++i) instances.push_back(at(2.0f + 0.1f * float(i), i, 0.3f * float(i % 5) - 0.6f));
+    const lod::LodFrame& f = lods.update(instances, characters, view());
+    EXPECT_EQ(f.counts[TS_LOD_NEAR].instances, 3u);
+    EXPECT_LE(f.counts[TS_LOD_NEAR].triangles, policy.budget.maxTessellatedTriangles);
+    // The nearest (largest on screen) are the ones tessellated.
+    for (const lod::LodDraw& d : f.tiers[TS_LOD_NEAR]) EXPECT_LT(d.instance, 3u);
+    EXPECT_EQ(f.budgetDemoted, 37u);
+    EXPECT_EQ(f.counts[TS_LOD_MIDDLE].instances, 37u);
+}
+
+TEST(LodManager, OneHugeInstanceGetsALowerLevelCapNotAnOverrun) {
+    // A model filling the screen: its size asks for level 64 (5,000 cage
+    // triangles become tens of millions); a tiny budget lowers the cap.
+    LodPolicy policy = noFade();
+    policy.budget.maxTessellatedTriangles = 100'000;
+    LodManager lods(policy, 1);
+    const auto characters = creature();
+    const LodInstance instance = at(1.0f, 0);
+    const lod::LodFrame& f = lods.update({&instance, 1}, characters, view());
+    ASSERT_EQ(f.counts[TS_LOD_NEAR].instances, 1u);
+    EXPECT_LE(f.counts[TS_LOD_NEAR].triangles, 100'000u);
+    EXPECT_GE(f.counts[TS_LOD_NEAR].triangles, 5000u);
+    EXPECT_LT(f.params.levels.x, 64.0f);
+    // A budget below the bare cage draws it untessellated (middle tier).
+    policy.budget.maxTessellatedTriangles = 4000;
+    LodManager bare(policy, 1);
+    const lod::LodFrame& g = bare.update({&instance, 1}, characters, view());
+    EXPECT_EQ(g.counts[TS_LOD_NEAR].instances, 0u);
+    EXPECT_EQ(g.counts[TS_LOD_MIDDLE].instances, 1u);
+}
+
+TEST(LodManager, MiddleAndFarCapsDropTheSmallest) {
+    LodPolicy policy = noFade();
+    policy.budget.maxNearInstances = 0;
+    policy.budget.maxMiddleInstances = 5;
+    policy.budget.maxFarInstances = 10;
+    LodManager lods(policy, 1);
+    const auto characters = creature();
+    std::vector<LodInstance> instances;
+    for (uint32_t i = 0; i < 30; ++i) instances.push_back(at(3.0f + float(i), i));
+    const lod::LodFrame& f = lods.update(instances, characters, view());
+    EXPECT_EQ(f.counts[TS_LOD_NEAR].instances, 0u);
+    EXPECT_EQ(f.counts[TS_LOD_MIDDLE].instances, 5u);
+    EXPECT_EQ(f.counts[TS_LOD_FAR].instances, 10u);
+    EXPECT_EQ(f.dropped, 15u);
+    for (const lod::LodDraw& d : f.tiers[TS_LOD_FAR]) EXPECT_LT(d.instance, 15u);
+}
+
+TEST(LodManager, AMovingCameraNeverExceedsTheBudgetAndEveryPathAgrees) {
+    // A crowd of 6,000 on a plane and a camera flying through it: every
+    // frame stays within every budget, cross-fades included, and the per-tier
+    // lists are what the shared per-instance rule gives from the frame's
+    // parameters (what the GPU passes run).
+    LodPolicy policy = LodPolicy::forDevice(lod::DeviceClass::Cpu);
+    LodManager lods(policy, 2);
+    const auto characters = creature();
+    Random random(11);
+    std::vector<LodInstance> instances;
+    for (uint32_t i = 0; i < 6000; ++i)
+        instances.push_back({glm::vec4(random.range(-60.0f, 60.0f), 0.0f, random.range(-60.0f, 60.0f), kRadius),
+                             i * 7 + 3, 0});
+    std::vector<uint32_t> gpuState(6000 * 7 + 3, shader::tsLodStateNone());
+    uint32_t demoted = 0, fading = 0, nearFrames = 0, dropped = 0;
+    for (int frame = 0; frame < 240; ++frame) {
+        scene::Camera c;
+        const float t = float(frame) / 240.0f;
+        c.setPosition({-50.0f + 100.0f * t, 1.7f, 20.0f * std::sin(6.0f * t)});
+        c.setYaw(-1.2f + 2.4f * t);
+        const lod::LodFrame& f = lods.update(instances, characters, view(c));
+        EXPECT_LE(f.counts[TS_LOD_NEAR].instances, policy.budget.maxNearInstances);
+        EXPECT_LE(f.counts[TS_LOD_NEAR].triangles, policy.budget.maxTessellatedTriangles);
+        EXPECT_LE(f.counts[TS_LOD_MIDDLE].instances, policy.budget.maxMiddleInstances);
+        EXPECT_LE(f.counts[TS_LOD_FAR].instances, policy.budget.maxFarInstances);
+        demoted += f.budgetDemoted;
+        dropped += f.dropped;
+        nearFrames += f.counts[TS_LOD_NEAR].instances > 0;
+        for (const lod::LodTierCount& count : f.counts) fading += count.fading;
+        std::array<uint32_t, lod::kTierCount> drawn{};
+        for (const LodInstance& instance : instances) {
+            uint32_t& s = gpuState[instance.id];
+            s = shader::tsLodUpdate(s, instance.sphere, f.params);
+            const uint32_t tier = shader::tsLodStateTier(s);
+            if (tier == TS_LOD_NONE) continue;
+            ++drawn[tier];
+            if (shader::tsLodStateFade(s) > 0u) ++drawn[shader::tsLodStatePrevious(s)];
+            ASSERT_EQ(s, lods.state(instance.id));
+        }
+        for (uint32_t t = 0; t < lod::kTierCount; ++t) EXPECT_EQ(drawn[t], f.counts[t].instances);
+    }
+    // The flight does exercise the budget and the fades.
+    EXPECT_GT(demoted, 0u);
+    EXPECT_GT(dropped, 0u);
+    EXPECT_GT(fading, 0u);
+    EXPECT_GT(nearFrames, 10u);
+    std::printf("flight: %u demotions, %u dropped, %u fading copies, %u frames with near instances\n", demoted,
+                dropped, fading, nearFrames);
+}
+
+TEST(LodManager, SameAnswerOnAnyThreadCount) {
+    const auto characters = creature();
+    Random random(5);
+    std::vector<LodInstance> instances;
+    for (uint32_t i = 0; i < 20000; ++i)
+        instances.push_back({glm::vec4(random.range(-100.0f, 100.0f), 0.0f, random.range(-200.0f, 0.0f), kRadius),
+                             i, 0});
+    LodManager one(LodPolicy{}, 1), four(LodPolicy{}, 4);
+    const lod::LodFrame& a = one.update(instances, characters, view());
+    const lod::LodFrame& b = four.update(instances, characters, view());
+    for (uint32_t t = 0; t < lod::kTierCount; ++t) {
+        ASSERT_EQ(a.tiers[t].size(), b.tiers[t].size());
+        for (size_t k = 0; k < a.tiers[t].size(); ++k) EXPECT_EQ(a.tiers[t][k].instance, b.tiers[t][k].instance);
+    }
+}
+
+TEST(LodPolicy, BadSettingsAreRefusedWithAMessage) {
+    LodPolicy policy;
+    EXPECT_TRUE(policy.validate().ok());
+    policy.budget.maxTessellatedTriangles = 0;
+    ASSERT_FALSE(policy.validate().ok());
+    EXPECT_NE(policy.validate().error().message.find("budget of zero"), std::string::npos);
+    policy = {};
+    policy.farPixels = 500.0f;
+    EXPECT_FALSE(policy.validate().ok());
+    policy = {};
+    policy.hysteresis = 1.5f;
+    EXPECT_FALSE(policy.validate().ok());
+    policy = {};
+    policy.fadeFrames = 100;
+    EXPECT_FALSE(policy.validate().ok());
+    EXPECT_LT(LodPolicy::forDevice(lod::DeviceClass::Cpu).budget.maxTessellatedTriangles,
+              LodPolicy::forDevice(lod::DeviceClass::Gpu).budget.maxTessellatedTriangles);
+}
