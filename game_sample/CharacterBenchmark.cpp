@@ -5,6 +5,7 @@
 #include "CharacterBenchFigures.h"
 #include "CharacterBenchReport.h"
 #include "DemoScene.h"
+#include "LodSettings.h"
 #include "BenchOutputs.h"
 #include "RenderSession.h"
 #include "TerrainBenchReport.h"
@@ -162,7 +163,9 @@ Status runCharacterBenchmark(const DemoOptions& options) {
                 const uint64_t rowStartNs = profiler.nowNs();
                 for (uint32_t f = 0; f < summary.warmupFrames + summary.frames; ++f, ++frameIndex) {
                     profiler.beginFrame(frameIndex);
-                    crowd->update(kPoseSeconds, camera, {session.height(), top, level});
+                    // The paths themselves are measured: every character in view
+                    // tessellated at the row's level, whatever the budget.
+                    crowd->update(kPoseSeconds, camera, {session.height(), top, level, measureEveryCharacter()});
                     const backend::CharacterDrawInfo draw{crowd->items(), path, options.displacement};
                     session.renderFrame(frameIndex, camera, settings.value(), options.clearColor, false, false, &draw);
                     profiler.endFrame();

@@ -100,22 +100,54 @@ void CharacterCrowd::populate(const DemoOptions& options, uint32_t froblins, uin
         m.angle = 1.0f;
     }
     // --model files stand in a row, playing their first clip: beside the
-    // crowd, or centred on the site when they are alone.
+    // crowd, or centred on the site when they are alone. Models come in any
+    // units (a file authored in centimetres is a hundred times too large in
+    // metres): the row is spaced by the largest one's size.
     const uint32_t models = uint32_t(mAssets.size()) - firstModel;
     const bool alone = mMembers.empty();
+    float largest = 0.0f;
+    for (uint32_t a = firstModel; a < mAssets.size(); ++a)
+        largest = std::max(largest, glm::length(glm::vec2(mAssets[a].box.extents().x, mAssets[a].box.extents().z)));
+    const float spacing = std::max(1.5f, 2.2f * largest);
     for (uint32_t k = 0; k < models; ++k) {
         const uint32_t a = firstModel + k;
         Member& m = add(a, mAssets[a].asset.clips.empty() ? -1 : 0);
-        m.anchor = site + (alone ? glm::vec2(1.5f * (float(k) - 0.5f * float(models - 1)), 0.0f)
-                                 : glm::vec2(-1.5f * float(k + 1), 0.8f));
+        m.anchor = site + (alone ? glm::vec2(spacing * (float(k) - 0.5f * float(models - 1)), 0.0f)
+                                 : glm::vec2(-spacing * float(k + 1), 0.8f));
         m.angle = CameraOrbit::kStart;  // facing where the camera starts
     }
+    if (models > 0 && !options.orbitDistance) frameModels(firstModel);
+}
+
+void CharacterCrowd::frameModels(uint32_t firstModel) {
+    // The sphere around every member from the first model on, and the
+    // crowd's usual view: the camera backs off until it all fits, and
+    // comes closer for a small model alone.
+    scene::Aabb bounds = scene::Aabb::fromMinMax(mSite - glm::vec3(0.5f), mSite + glm::vec3(0.5f, 1.5f, 0.5f));
+    const bool alone = mMembers.front().asset >= firstModel;
+    if (alone) bounds = {};
+    for (const Member& m : mMembers) {
+        if (m.asset < firstModel) continue;
+        const scene::Aabb& box = mAssets[m.asset].box;
+        const glm::vec3 at(m.anchor.x, mSite.y, m.anchor.y);
+        const float reach = glm::length(glm::vec2(box.extents().x, box.extents().z)) + glm::length(glm::vec2(box.center().x, box.center().z));
+        bounds.expand(scene::Aabb::fromMinMax(at + glm::vec3(-reach, box.min.y, -reach), at + glm::vec3(reach, box.max.y, reach)));
+    }
+    const float radius = glm::length(bounds.extents());
+    const float fit = 1.2f * radius / std::sin(0.5f * scene::Camera::kDefaultVerticalFov);
+    const float distance = alone ? std::max(fit, 1.0f) : std::max(fit, kOrbitDistance);
+    const glm::vec3 centre = bounds.center();
+    mOrbit.site = {centre.x, mSite.y, centre.z};
+    mOrbit.distance = distance;
+    mOrbit.lookHeight = centre.y - mSite.y;
+    mOrbit.height = mOrbit.lookHeight + 0.25f * distance;
 }
 
 void CharacterCrowd::update(double seconds, const scene::Camera& camera, const CharacterLevels& levels) {
     TESSERA_CPU_SCOPE("characters.animate");
     mPoser.begin(camera, levels);
-    for (const Member& m : mMembers) {
+    for (uint32_t id = 0; id < mMembers.size(); ++id) {
+        const Member& m = mMembers[id];
         glm::vec2 at = m.anchor;
         float heading = m.angle;
         if (m.radius > 0.0f) {
@@ -127,9 +159,9 @@ void CharacterCrowd::update(double seconds, const scene::Camera& camera, const C
         }
         glm::mat4 world = glm::translate(glm::mat4(1.0f), glm::vec3(at.x, mTerrain->heightAt(at.x, at.y), at.y));
         world = glm::rotate(world, heading, glm::vec3(0, 1, 0));
-        if (mPoser.visible(mAssets[m.asset], world))
-            mPoser.add(mAssets, m.asset, world, m.clip, float(seconds) + m.clipOffset);
+        mPoser.offer(id, m.asset, world, m.clip, float(seconds) + m.clipOffset);
     }
+    mPoser.finish(mAssets);
 }
 
 } // namespace tessera::demo

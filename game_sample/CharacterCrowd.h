@@ -53,6 +53,9 @@ private:
 
     CharacterCrowd() = default;
     void populate(const DemoOptions& options, uint32_t froblins, uint32_t cesium, uint32_t firstModel);
+    /// Points the orbit at the --model files from `firstModel` on so that
+    /// they fit the view whatever their units (unless --orbit-distance).
+    void frameModels(uint32_t firstModel);
 
     const terrain::Terrain* mTerrain = nullptr;
     CharacterAssets mAssets;

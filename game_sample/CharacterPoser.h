@@ -1,16 +1,17 @@
 #pragma once
 /// @file CharacterPoser.h
-/// Turns placed characters into a frame's draw items: poses each on the CPU
-/// (clip sampled, globals, skinning palette), picks its tessellation level
-/// from its size on screen, and keeps the poses and palettes per drawn slot,
-/// so a frame allocates nothing once the slots exist. Both the characters
-/// scene and the crowd scene draw through it.
+/// Turns placed characters into a frame's draw items: the LOD manager
+/// (lod::LodManager) picks each one's tier, level and cross-fade within the
+/// frame budget, and only the instances it draws are posed on the CPU (clip
+/// sampled, globals, skinning palette). Poses and palettes are kept per
+/// drawn slot, so a frame allocates nothing once the slots exist. Both the
+/// characters scene and the crowd scene draw through it.
 
 #include "CharacterAssets.h"
 #include "tessera/backend/CharacterDesc.h"
 #include "tessera/character/Pose.h"
+#include "tessera/lod/LodManager.h"
 #include "tessera/scene/Camera.h"
-#include "tessera/scene/Frustum.h"
 
 #include <deque>
 #include <memory>
@@ -22,44 +23,56 @@
 
 namespace tessera::demo {
 
-/// How the frame's characters are tessellated: fixed, or from their size on
-/// screen, up to the backend's maximum.
+/// How the frame's characters are tessellated and budgeted.
 struct CharacterLevels {
     uint32_t viewportHeight = 720;
+    /// The backend's highest level.
     float maxLevel = 64.0f;
-    std::optional<float> fixedLevel; ///< --character-level
+    std::optional<float> fixedLevel; ///< --character-level (the budget still caps it)
+    /// Thresholds and budget: the device class's defaults and the --lod-* flags.
+    lod::LodPolicy lod;
 };
 
 class CharacterPoser {
 public:
-    /// A tessellated edge covers about this many pixels on screen when the
-    /// level is not fixed.
-    static constexpr float kTargetEdgePixels = 1.0f;
-
-    /// Starts a frame seen by `camera`: clears the items.
+    /// Starts a frame seen by `camera`: clears the offers and the items.
     void begin(const scene::Camera& camera, const CharacterLevels& levels);
-    /// Whether asset `asset` placed at `world` may be in view: its compression
-    /// box holds every pose its clips reach, so a character outside can skip
-    /// its pose and both passes.
-    bool visible(const CrowdAsset& asset, const glm::mat4& world) const;
-    /// Poses asset `index` of `assets` at `seconds` of clip `clip` (-1: rest
-    /// pose; looping) placed at `world` (rigid, uniform scale), and appends
-    /// its draw item.
-    void add(const CharacterAssets& assets, uint32_t index, const glm::mat4& world, int clip, float seconds);
+    /// Offers instance `id` (stable from frame to frame: its LOD state's
+    /// key) of asset `asset` placed at `world` (rigid, uniform scale),
+    /// playing clip `clip` (-1: rest pose; looping) at `seconds`. Posed by
+    /// finish() only if drawn.
+    void offer(uint32_t id, uint32_t asset, const glm::mat4& world, int clip, float seconds);
+    /// Selects the offered instances' tiers and poses the drawn ones.
+    void finish(const CharacterAssets& assets);
 
     std::span<const backend::CharacterDrawItem> items() const { return mItems; }
+    /// The LOD manager's answer for the frame (tiers, counts, parameters).
+    const lod::LodFrame& lod() const { return mLod.frame(); }
 
 private:
+    struct Offer {
+        uint32_t asset = 0;
+        glm::mat4 world{1.0f};
+        int clip = -1;
+        float seconds = 0.0f;
+    };
     struct Slot {
         const character::Skeleton* skeleton = nullptr;
         std::unique_ptr<character::Pose> pose;
         std::vector<glm::mat4> palette;
     };
 
-    scene::Frustum mFrustum;
-    glm::vec3 mEye{0.0f};
-    float mPixelsPerRadian = 1.0f;
+    /// Poses offer `offer` into the next slot and returns its palette.
+    std::span<const glm::mat4> pose(const CharacterAssets& assets, const Offer& offer);
+
+    scene::Camera mCamera;
     CharacterLevels mLevels;
+    lod::LodManager mLod;
+    std::vector<Offer> mOffers;
+    std::vector<lod::LodInstance> mInstances;
+    std::vector<lod::LodCharacter> mCharacters;
+    std::vector<int32_t> mSlotOf; ///< per offer: its slot this frame, -1 when not posed
+    size_t mSlotsUsed = 0;
     // A deque: items point into the palettes, which must not move as slots are added.
     std::deque<Slot> mSlots;
     std::vector<backend::CharacterDrawItem> mItems;

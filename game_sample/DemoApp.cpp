@@ -5,6 +5,7 @@
 #include "CrowdBenchmark.h"
 #include "DemoOutputs.h"
 #include "DemoScene.h"
+#include "LodSettings.h"
 #include "RenderSession.h"
 #include "TerrainBenchmark.h"
 #include "tessera/core/Log.h"
@@ -42,6 +43,9 @@ Status runFlythrough(const DemoOptions& options) {
                    : std::string()));
 
     session.setTerrainVisible(options.terrain);
+    auto lodPolicyFound = lodPolicyFor(options, session.deviceClass());
+    if (!lodPolicyFound) return lodPolicyFound.error();
+    const lod::LodPolicy lodPolicy = lodPolicyFound.value();
     CharacterPopulation* characters = scene.characters();
     if (characters) {
         if (options.characterLevel && *options.characterLevel > session.maxCharacterLevel())
@@ -65,8 +69,8 @@ Status runFlythrough(const DemoOptions& options) {
         backend::CharacterDrawInfo draw;
         if (characters) {
             characters->update(frame * DemoScene::kSecondsPerFrame, camera,
-                               {session.height(), session.maxCharacterLevel(), options.characterLevel});
-            draw = {characters->items(), options.characterPath, options.displacement};
+                               {session.height(), session.maxCharacterLevel(), options.characterLevel, lodPolicy});
+            draw = {characters->items(), options.characterPath, options.displacement, options.lodColors};
         }
         const bool last = frame + 1 == frames;
         session.renderFrame(frame, camera, settings.value(), options.clearColor, options.wireframe,

@@ -1,6 +1,7 @@
 #include "DemoOptions.h"
 
 #include "tessera/crowd/Crowd.h"
+#include "tessera/lod/LodPolicy.h"
 
 #include <charconv>
 #include <cmath>
@@ -141,7 +142,19 @@ Scene:
                         tessellated vertex)
   --character-level L   characters' tessellation level, 1 to the backend's
                         maximum (default: from each character's size on
-                        screen)
+                        screen); every character in view is then
+                        tessellated at L, with no LOD budget unless the
+                        --lod-* flags give one
+  --lod-near PX         LOD thresholds: characters at least PX pixels tall
+  --lod-far PX          on screen are tessellated (default 128), below the
+                        far one drawn with the simplest mesh (default 40),
+                        the cage in between
+  --lod-budget T        at most T tessellated triangles a frame (default:
+                        24000000 on a GPU, 150000 on lavapipe)
+  --lod-near-max N      at most N tessellated characters a frame (default:
+                        1024 on a GPU, 4 on lavapipe)
+  --lod-colors          tint characters by LOD tier: near green, middle
+                        yellow, far red
   --heightmap FILE      8- or 16-bit grayscale PNG height map (default: the
                         generated content/terrain/height.png)
   --content DIR         content directory
@@ -273,6 +286,28 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
             if (!n) return n.error();
             o.characterLevel = n.value();
         }
+        else if (flag == "--lod-colors") o.lodColors = true;
+        else if (flag == "--lod-near" || flag == "--lod-far") {
+            TESSERA_TAKE(text);
+            auto n = parseNumber(flag, text, 0.5f, 100000.0f);
+            if (!n) return n.error();
+            (flag == "--lod-near" ? o.lodNear : o.lodFar) = n.value();
+        }
+        else if (flag == "--lod-budget") {
+            TESSERA_TAKE(text);
+            auto n = parseCount(flag, text, 0, UINT32_MAX);
+            if (!n) return n.error();
+            if (n.value() == 0)
+                return fail("--lod-budget 0: a budget of zero tessellated triangles draws nothing tessellated; give at "
+                            "least one cage's worth (e.g. 10000)");
+            o.lodBudget = n.value();
+        }
+        else if (flag == "--lod-near-max") {
+            TESSERA_TAKE(text);
+            auto n = parseCount(flag, text, 0, 100000);
+            if (!n) return n.error();
+            o.lodNearMax = n.value();
+        }
         else if (flag == "--crowd") TESSERA_TAKE_COUNT(crowd, 0, 256)
         else if (flag == "--orbit-distance") {
             TESSERA_TAKE(text);
@@ -368,6 +403,11 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
     if (o.backend == "all" && o.bench.empty())
         return fail("--backend all compares the backends in --bench terrain or characters; pick one backend for the "
                     "demo");
+    const float lodNear = o.lodNear.value_or(lod::LodPolicy{}.nearPixels);
+    const float lodFar = o.lodFar.value_or(lod::LodPolicy{}.farPixels);
+    if (lodFar > lodNear)
+        return fail("--lod-far ", formatNumber(lodFar), " is above --lod-near ", formatNumber(lodNear),
+                    ": the far threshold must be the smaller");
     if (!o.models.empty() && !o.sceneGiven) o.scene = "characters";
     const bool crowdFlags = !o.agents.empty() || crowdDrawGiven;
     if (crowdFlags && !o.sceneGiven && o.bench.empty()) o.scene = "crowd";

@@ -71,6 +71,14 @@ struct DemoOptions {
     bool terrain = true;                ///< --no-terrain: characters alone on the clear colour (crack tests, captures)
     backend::CharacterPath characterPath = backend::CharacterPath::TwoPass; ///< --character-path
     std::optional<float> characterLevel; ///< --character-level L; unset: from each character's size on screen
+    /// The LOD manager's policy over the device class's defaults
+    /// (lod::LodPolicy::forDevice): --lod-near PX, --lod-far PX (thresholds
+    /// in projected pixels), --lod-budget T (tessellated triangles per
+    /// frame), --lod-near-max N (tessellated instances per frame).
+    std::optional<float> lodNear, lodFar;
+    std::optional<uint64_t> lodBudget;
+    std::optional<uint32_t> lodNearMax;
+    bool lodColors = false;             ///< --lod-colors: tint instances by LOD tier
 
     /// --agents N (the crowd scene's agents; unset: 2000) or, with --bench
     /// crowd-sim, a comma list of crowd sizes (unset: 1000,10000,65000). Each

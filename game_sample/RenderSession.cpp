@@ -60,6 +60,10 @@ RenderSession::~RenderSession() {
     mSelected->backend->shutdown();
 }
 
+lod::DeviceClass RenderSession::deviceClass() const {
+    return mSelected->device && mSelected->device->features().isCpu ? lod::DeviceClass::Cpu : lod::DeviceClass::Gpu;
+}
+
 std::string RenderSession::deviceName() const {
     return mSelected->device ? mSelected->device->features().deviceName : std::string("none (null backend)");
 }

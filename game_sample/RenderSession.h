@@ -6,6 +6,7 @@
 #include "BackendSelection.h"
 #include "CharacterAssets.h"
 #include "DemoOptions.h"
+#include "tessera/lod/LodPolicy.h"
 #include "tessera/gpu/FrameScheduler.h"
 #include "tessera/gpu/RenderTarget.h"
 #include "tessera/gpu/Swapchain.h"
@@ -43,6 +44,9 @@ public:
     /// (destroyed with the session). An asset the backend cannot draw is an
     /// error naming its file.
     Status createCharacters(CharacterAssets& assets);
+    /// The device's class, for the LOD budget's defaults (the null
+    /// backend counts what a GPU would draw).
+    lod::DeviceClass deviceClass() const;
     /// The largest character tessellation level the backend draws.
     float maxCharacterLevel() const { return capabilities().maxTessFactor; }
 

@@ -152,7 +152,7 @@ glm::mat4 SimulatedCrowd::agentWorld(uint32_t agent, uint32_t creature) const {
 void SimulatedCrowd::update(double, const scene::Camera& camera, const CharacterLevels& levels) {
     TESSERA_CPU_SCOPE("crowd.draw");
     mPoser.begin(camera, levels);
-    if (mDrawCount == 0) return;
+    if (mDrawCount == 0) return mPoser.finish(mAssets);
     const scene::Frustum frustum = camera.frustum();
     const crowd::CrowdAgents& agents = mCrowd->agents();
     const glm::vec3 eye = camera.position();
@@ -180,8 +180,9 @@ void SimulatedCrowd::update(double, const scene::Camera& camera, const Character
         const CreatureGait& gait = mGait.creatures[creature];
         const int clip = agents.clip[i] == crowd::AgentClip::Walk ? gait.walkClip : gait.idleClip;
         const float duration = clip >= 0 ? mAssets[creature].asset.clips[size_t(clip)].duration() : 0.0f;
-        mPoser.add(mAssets, creature, agentWorld(i, creature), clip, agents.phase[i] * duration);
+        mPoser.offer(agents.id[i], creature, agentWorld(i, creature), clip, agents.phase[i] * duration);
     }
+    mPoser.finish(mAssets);
 }
 
 } // namespace tessera::demo

@@ -1,6 +1,7 @@
 #include "BasicCharacterBackend.h"
 
 #include "CommandHelpers.h"
+#include "CrowdLod.h"
 #include "FrameUniforms.h"
 #include "tessera/character/CharacterAsset.h"
 #include "tessera/gpu/FrameContext.h"
@@ -64,8 +65,15 @@ void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& dra
         if (!character || item.palette.size() < character->paletteSize()) continue;
         CharacterInstance instance;
         instance.character = character;
-        instance.level = std::clamp(std::isnan(item.tessLevel) ? 1.0f : item.tessLevel, 1.0f, maxLevel);
-        instance.uniforms = mFrame->pushUniform(character->uniforms(item.world, instance.level, draw.displacement));
+        // Only the near tier is tessellated and displaced: the middle and far
+        // tiers draw the cage itself (level 1) lit by the normal map.
+        const bool near = item.tier == TS_LOD_NEAR;
+        instance.level = near ? std::clamp(std::isnan(item.tessLevel) ? 1.0f : item.tessLevel, 1.0f, maxLevel) : 1.0f;
+        const float coverage = std::isnan(item.coverage) ? 1.0f : std::clamp(item.coverage, 0.0f, 1.0f);
+        const glm::vec4 lod(coverage, item.fadingOut ? 1.0f : 0.0f, float(std::min(item.tier, TS_LOD_FAR)),
+                            draw.lodColors ? 1.0f : 0.0f);
+        instance.uniforms =
+            mFrame->pushUniform(character->uniforms(item.world, instance.level, draw.displacement && near, lod));
         // Only the used joints are bound: the shaders index the palette by the
         // cage's joints, all below paletteSize (GpuCharacter checks them), and
         // a 16 KiB block per instance would fill the frame's uniform ring.

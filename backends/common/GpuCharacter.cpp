@@ -166,7 +166,8 @@ CompressedCage& GpuCharacter::compressed(uint32_t slot, uint32_t instance) {
     return *caches[instance];
 }
 
-shader::CharacterUniforms GpuCharacter::uniforms(const glm::mat4& world, float level, bool displacement) const {
+shader::CharacterUniforms GpuCharacter::uniforms(const glm::mat4& world, float level, bool displacement,
+                                                 const glm::vec4& lod) const {
     shader::CharacterUniforms u{};
     u.world = world;
     u.worldNormal = glm::inverseTranspose(world);
@@ -176,6 +177,7 @@ shader::CharacterUniforms GpuCharacter::uniforms(const glm::mat4& world, float l
     const bool on = displacement && mHasDisplacement;
     u.displacement = glm::vec4(on ? mDisplacementScale : 0.0f, on ? mDisplacementBias : 0.0f, level, 1.0f);
     u.counts = glm::uvec4(mVertexCount, mPaletteSize, 256u, mNegativeHandedness ? 1u : 0u);
+    u.lod = lod;
     return u;
 }
 

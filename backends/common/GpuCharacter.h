@@ -53,9 +53,10 @@ public:
     /// frame slot `slot` (made on first use, kept for later frames).
     CompressedCage& compressed(uint32_t slot, uint32_t instance);
 
-    /// Uniforms for one instance (world matrix and tessellation level filled
-    /// by the caller).
-    shader::CharacterUniforms uniforms(const glm::mat4& world, float level, bool displacement) const;
+    /// Uniforms for one instance: placement, level, displacement on or off,
+    /// and its LOD tier and cross-fade (CharacterUniforms::lod).
+    shader::CharacterUniforms uniforms(const glm::mat4& world, float level, bool displacement,
+                                       const glm::vec4& lod) const;
 
     gpu::Image& baseColor() { return mBaseColor; }
     gpu::Image& normalMap() { return mNormalMap; }

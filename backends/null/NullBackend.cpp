@@ -2,6 +2,7 @@
 // noop renderer). It validates every call the way a real backend would use
 // it and counts what a real backend would draw, so tests of the data model
 // (scene, culling, tessellation levels, splats) run anywhere, CI included.
+#include "CrowdLod.h"
 #include "tessera/backend/PluginApi.h"
 #include "tessera/character/CharacterAsset.h"
 #include "tessera/tessellator/ContinuousLevel.h"
@@ -95,9 +96,11 @@ public:
             const uint64_t cage = asset->cage.triangleCount();
             ++mReport.charactersDrawn;
             mReport.characterCageTriangles += cage;
-            const uint64_t triangles =
-                cage * characterTriangles(std::clamp(std::isnan(item.tessLevel) ? 1.0f : item.tessLevel, 1.0f,
-                                                     kMaxTessFactor));
+            // Only the near LOD tier is tessellated (CharacterDrawItem::tier).
+            const float level = item.tier == TS_LOD_NEAR ? std::clamp(std::isnan(item.tessLevel) ? 1.0f : item.tessLevel,
+                                                                      1.0f, kMaxTessFactor)
+                                                         : 1.0f;
+            const uint64_t triangles = cage * characterTriangles(level);
             mReport.characterTriangles += triangles;
             mReport.trianglesSubmitted += triangles;
         }

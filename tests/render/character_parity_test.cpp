@@ -8,6 +8,7 @@
 // compressed vertices) must also agree closely with the single-pass path
 // (every tessellated vertex skinned from the uncompressed cage), and the
 // whole characters scene must run cleanly on every backend.
+#include "BenchmarkJson.h"
 #include "CharacterDemo.h"
 #include "ImageCompare.h"
 #include "JsonReader.h"
@@ -49,28 +50,6 @@ struct ParityRun {
     std::optional<uint64_t> triangles; ///< clipping invocations of the tessellation pass
     std::string error;                 ///< why `triangles` is missing
 };
-
-std::string slurp(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-/// The median frame's clipping invocations of `passName` in a --benchmark report.
-std::optional<uint64_t> passTriangles(const std::string& path, const std::string& passName, std::string& error) {
-    JsonValue report;
-    if (!parseJson(slurp(path), report, error)) return std::nullopt;
-    const JsonValue* passes = report.find("passes");
-    if (passes && passes->isArray())
-        for (const JsonValue& pass : passes->array) {
-            if (pass.stringAt("name") != passName) continue;
-            const JsonValue* stats = pass.find("statsMedianFrame");
-            if (auto n = stats ? stats->numberAt("clippingInvocations") : std::nullopt) return uint64_t(*n);
-        }
-    error = path + ": no pipeline statistics for pass " + passName;
-    return std::nullopt;
-}
 
 ParityRun runPosed(const std::string& backend, const std::string& path, const std::string& level) {
     const auto dir = testOutputDir("character_parity");

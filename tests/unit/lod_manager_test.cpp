@@ -225,9 +225,9 @@ TEST(LodManager, AMovingCameraNeverExceedsTheBudgetAndEveryPathAgrees) {
     uint32_t demoted = 0, fading = 0, nearFrames = 0, dropped = 0;
     for (int frame = 0; frame < 240; ++frame) {
         scene::Camera c;
-        const float t = float(frame) / 240.0f;
-        c.setPosition({-50.0f + 100.0f * t, 1.7f, 20.0f * std::sin(6.0f * t)});
-        c.setYaw(-1.2f + 2.4f * t);
+        const float progress = float(frame) / 240.0f;
+        c.setPosition({-50.0f + 100.0f * progress, 1.7f, 20.0f * std::sin(6.0f * progress)});
+        c.setYaw(-1.2f + 2.4f * progress);
         const lod::LodFrame& f = lods.update(instances, characters, view(c));
         EXPECT_LE(f.counts[TS_LOD_NEAR].instances, policy.budget.maxNearInstances);
         EXPECT_LE(f.counts[TS_LOD_NEAR].triangles, policy.budget.maxTessellatedTriangles);

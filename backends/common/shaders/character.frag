@@ -1,7 +1,9 @@
 #version 450
-// Character shading shared by every backend (character_shading.glsl).
+// Character shading shared by every backend (character_shading.glsl), with
+// the LOD cross-fade's dither and the --lod-colors tint (lod_fade.glsl).
 #extension GL_GOOGLE_include_directive : require
 #include "character_shading.glsl"
+#include "lod_fade.glsl"
 
 layout(location = 0) in vec3 inWorld;
 layout(location = 1) in vec3 inNormal;
@@ -10,5 +12,8 @@ layout(location = 3) in vec2 inUv;
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    outColor = vec4(tsShadeCharacter(inWorld, inNormal, inTangent, inUv), 1.0);
+    if (!tsLodKeepPixel(gl_FragCoord.xy, uCharacter.lod.x, uCharacter.lod.y > 0.5)) discard;
+    vec3 color = tsShadeCharacter(inWorld, inNormal, inTangent, inUv);
+    if (uCharacter.lod.w > 0.5) color *= tsLodTierTint(uint(uCharacter.lod.z));
+    outColor = vec4(color, 1.0);
 }

@@ -41,8 +41,9 @@ struct CharacterUniforms {
     vec4 uvRange;      // xy: uv minimum, zw: uv maximum (the compressed uv's range)
     vec4 displacement; // x: scale, y: bias (both 0 with displacement off), z: tessellation level, w: 1 = normal map on
     uvec4 counts;      // x: cage vertices, y: palette size, z: r2vb target width, w: 1 = bitangent is -cross(n, t) for the whole character
+    vec4 lod;          // x: coverage in (0, 1] (a cross-fade's share), y: 1 = the fading-out copy, z: LOD tier (CrowdLod.h), w: 1 = tint by tier
 };
-TS_CHECK_SIZE(CharacterUniforms, 208)
+TS_CHECK_SIZE(CharacterUniforms, 224)
 
 struct CharacterPalette {
     mat4 joints[TS_MAX_CHARACTER_JOINTS];

@@ -38,6 +38,7 @@ const std::map<std::string, std::vector<L>>& knownExtensions() {
         {"KHR_materials_transmission", {L::Material}},
         {"KHR_materials_unlit", {L::Material}},
         {"KHR_materials_volume", {L::Material}},
+        {"MSFT_lod", {L::Node, L::Material}},
     };
     return table;
 }
@@ -93,7 +94,7 @@ void GltfExtensionValidator::check(const Json& o, const std::string& ptr, Extens
         const auto& where = known->second;
         if (std::find(where.begin(), where.end(), location) == where.end())
             raise(p, "unexpected location for this extension");
-        checkContent(it.key(), ext, p, o);
+        checkContent(it.key(), ext, p, o, location);
     }
 }
 
@@ -104,7 +105,7 @@ void GltfExtensionValidator::checkTextureInfo(const Json& o, const std::string& 
 }
 
 void GltfExtensionValidator::checkContent(const std::string& name, const Json& ext, const std::string& ptr,
-                                          const Json& owner) const {
+                                          const Json& owner, ExtensionLocation location) const {
     const Json& root = mJson.root();
     if (name == "KHR_lights_punctual") {
         if (&owner == &root) return checkLights(ext, ptr);
@@ -138,8 +139,27 @@ void GltfExtensionValidator::checkContent(const std::string& name, const Json& e
         mJson.reqIndex(ext, ptr, "source", "images");
     } else if (name == "KHR_node_visibility") {
         mJson.optBool(ext, ptr, "visible");
+    } else if (name == "MSFT_lod") {
+        checkLod(ext, ptr, owner, location);
     } else if (name.rfind("KHR_materials_", 0) == 0) {
         checkMaterialExtension(name, ext, ptr);
+    }
+}
+
+void GltfExtensionValidator::checkLod(const Json& ext, const std::string& ptr, const Json& owner,
+                                      ExtensionLocation location) const {
+    // MSFT_lod: `ids` lists the lower levels, other nodes (or materials) of
+    // the same kind as the owner, from the next lower level to the lowest.
+    const char* collection = location == L::Node ? "nodes" : "materials";
+    const Json& ids = mJson.reqArray(ext, ptr, "ids");
+    size_t count = mJson.count(collection);
+    std::set<size_t> seen;
+    for (size_t i = 0; i < ids.size(); ++i) {
+        std::string p = childPointer(ptr + "/ids", i);
+        size_t id = mJson.checkIndex(ids[i], p, count);
+        if (!seen.insert(id).second) raise(p, "duplicate element " + std::to_string(id));
+        // The owner is an element of the same array: a level cannot be itself.
+        if (&mJson.root().at(collection).at(id) == &owner) raise(p, "a level of detail cannot refer to its own object");
     }
 }
 

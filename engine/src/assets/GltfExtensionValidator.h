@@ -26,7 +26,9 @@ public:
     void checkDeclarations() const;
 
 private:
-    void checkContent(const std::string& name, const Json& ext, const std::string& ptr, const Json& owner) const;
+    void checkContent(const std::string& name, const Json& ext, const std::string& ptr, const Json& owner,
+                      ExtensionLocation location) const;
+    void checkLod(const Json& ext, const std::string& ptr, const Json& owner, ExtensionLocation location) const;
     void checkLights(const Json& ext, const std::string& ptr) const;
     void checkVariantsRoot(const Json& ext, const std::string& ptr) const;
     void checkVariantsPrimitive(const Json& ext, const std::string& ptr) const;

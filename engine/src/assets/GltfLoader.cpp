@@ -3,8 +3,10 @@
 #include "AnimationConverter.h"
 #include "GltfDocument.h"
 #include "GltfError.h"
+#include "LodReader.h"
 #include "MeshConverter.h"
 #include "TextureDecoder.h"
+#include "tessera/character/FarMesh.h"
 
 #include <new>
 
@@ -20,6 +22,14 @@ Result<character::CharacterAsset> loadCharacter(const std::filesystem::path& fil
         MeshConverter meshes(model, skeleton);
         character::CharacterAsset asset;
         asset.cage = meshes.convert();
+        asset.farMesh = readFarLod(model, document.json(), skeleton, asset.cage);
+        if (!asset.farMesh) {
+            // No far level in the file (any glTF but the generated
+            // creatures): make it now, as tessera-creaturegen would have.
+            Result<character::FarMesh> far = character::simplifyCage(asset.cage);
+            if (!far) return Error{name + ": " + far.error().message};
+            asset.farMesh = std::move(far.value().mesh);
+        }
         asset.clips = convertAnimations(model, skeleton);
         asset.skeleton = std::move(skeleton.skeleton);
         decodeMaterialTextures(model, document.json(), meshes.firstMaterial(), asset);

@@ -116,24 +116,34 @@ void MeshConverter::addPrimitive(const tinygltf::Primitive& primitive, uint32_t 
     for (uint32_t i : indices) mMesh.indices.push_back(base + i);
 }
 
+void MeshConverter::addMesh(const tinygltf::Node& node, uint32_t skeletonNode) {
+    const tinygltf::Mesh& mesh = mModel.meshes[static_cast<size_t>(node.mesh)];
+    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+        const tinygltf::Primitive& primitive = mesh.primitives[p];
+        if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+            primitive.mode != TINYGLTF_MODE_TRIANGLE_FAN)
+            continue;
+        if (mFirstMaterial < 0 && !mHaveTriangles) mFirstMaterial = primitive.material;
+        mHaveTriangles = true;
+        addPrimitive(primitive, skeletonNode, node.skin,
+                     "/meshes/" + std::to_string(node.mesh) + "/primitives/" + std::to_string(p));
+    }
+}
+
 character::CageMesh MeshConverter::convert() {
     for (size_t s = 0; s < mSkeleton.indexToNode.size(); ++s) {
         const tinygltf::Node& node = mModel.nodes[static_cast<size_t>(mSkeleton.indexToNode[s])];
-        if (node.mesh < 0) continue;
-        const tinygltf::Mesh& mesh = mModel.meshes[static_cast<size_t>(node.mesh)];
-        for (size_t p = 0; p < mesh.primitives.size(); ++p) {
-            const tinygltf::Primitive& primitive = mesh.primitives[p];
-            if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
-                primitive.mode != TINYGLTF_MODE_TRIANGLE_FAN)
-                continue;
-            if (mFirstMaterial < 0 && !mHaveTriangles) mFirstMaterial = primitive.material;
-            mHaveTriangles = true;
-            addPrimitive(primitive, static_cast<uint32_t>(s), node.skin,
-                         "/meshes/" + std::to_string(node.mesh) + "/primitives/" + std::to_string(p));
-        }
+        if (node.mesh >= 0) addMesh(node, static_cast<uint32_t>(s));
     }
     if (!mHaveTriangles || mMesh.indices.empty()) raise("", "no triangle primitives");
     if (mMesh.bindings.size() > 65535) raise("", "too many skin joints");
+    return std::move(mMesh);
+}
+
+character::CageMesh MeshConverter::convertNode(int node, uint32_t skeletonNode) {
+    const tinygltf::Node& n = mModel.nodes[static_cast<size_t>(node)];
+    if (n.mesh >= 0) addMesh(n, skeletonNode);
+    if (!mHaveTriangles || mMesh.indices.empty()) raise("/nodes/" + std::to_string(node), "no triangle primitives");
     return std::move(mMesh);
 }
 

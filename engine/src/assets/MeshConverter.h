@@ -19,11 +19,18 @@ public:
 
     /// Throws GltfError when there is no triangle primitive at all.
     character::CageMesh convert();
+    /// The triangle primitives of one node's mesh alone, with the palette its
+    /// skin gives (or, unskinned, bound rigidly to `skeletonNode`): an MSFT_lod
+    /// level of the mesh node at `skeletonNode`, which need not be in the
+    /// scene itself. Use a fresh converter. Throws GltfError when it has none.
+    character::CageMesh convertNode(int node, uint32_t skeletonNode);
     /// The material of the first triangle primitive (-1 if none).
     int firstMaterial() const { return mFirstMaterial; }
 
 private:
     void addPrimitive(const tinygltf::Primitive& primitive, uint32_t skeletonNode, int skin, const std::string& ptr);
+    /// Adds the triangle primitives of a node's mesh.
+    void addMesh(const tinygltf::Node& node, uint32_t skeletonNode);
     /// The palette offset of a skin (its bindings are appended once).
     uint32_t skinPalette(int skin, const std::string& ptr);
     uint32_t rigidPalette(uint32_t skeletonNode);

@@ -10,12 +10,16 @@ namespace tessera::lod {
 LodPolicy LodPolicy::forDevice(DeviceClass device) {
     LodPolicy policy;
     if (device == DeviceClass::Cpu) {
-        // lavapipe on two cores draws about 4 to 5 million triangles a second
-        // (docs/CROWD.md, "Budgets"): a few tessellated creatures, a few
-        // dozen cages and a few thousand far meshes keep a frame well under
-        // a second whatever the scene.
+        // lavapipe on two cores: a tessellated model filling a fifth of a
+        // 1280x720 frame took 1 s at 386,000 triangles, 0.23 s at 150,000
+        // (docs/CROWD.md, "Budgets"); untessellated cages cost about 0.2 s per
+        // million. A few tessellated instances, a few dozen cages and a few
+        // thousand far meshes keep any scene's frame under a second.
+        // Edges of about 3 pixels instead of 1: a ninth of the triangles, and
+        // on a CPU rasterizer tiny triangles cost far more than their pixels.
+        policy.targetEdgePixels = 3.0f;
         policy.budget.maxNearInstances = 4;
-        policy.budget.maxTessellatedTriangles = 400'000;
+        policy.budget.maxTessellatedTriangles = 150'000;
         policy.budget.maxMiddleInstances = 48;
         policy.budget.maxFarInstances = 3000;
     }

@@ -41,8 +41,10 @@ Result<uint64_t> measureGlbMeshBytes(const std::filesystem::path& file) {
     uint64_t total = 0;
     const nlohmann::json& accessors = member(doc, "accessors");
     const nlohmann::json& views = member(doc, "bufferViews");
-    for (const auto& mesh : member(doc, "meshes")) {
-        for (const auto& prim : member(mesh, "primitives")) {
+    // Mesh 0 is the cage the exporter writes; a later mesh is the far LOD level.
+    const nlohmann::json& meshes = member(doc, "meshes");
+    if (meshes.is_array() && !meshes.empty()) {
+        for (const auto& prim : member(meshes[0], "primitives")) {
             const nlohmann::json& draco = member(member(prim, "extensions"), "KHR_draco_mesh_compression");
             if (draco.is_object()) {
                 size_t view = draco.value("bufferView", size_t{0});

@@ -138,6 +138,15 @@ int main(int argc, char** argv) {
         {"texels_covered", baked.stats.texelsCovered},
         {"misses", baked.stats.misses},
     };
+    if (creature.far) {
+        // The far LOD mesh (docs/CHARACTERS.md, "The far mesh").
+        report["far_triangles"] = creature.far->mesh.triangleCount();
+        report["far_vertices"] = creature.far->mesh.vertices.size();
+        report["far_method"] = character::farMeshMethodName(creature.far->method);
+        report["far_error_relative"] = creature.far->relativeError;
+        report["far_error"] = creature.far->absoluteError;
+        report["far_seam_triangles"] = creature.far->seamTriangles;
+    }
     if (!o.report.empty()) {
         std::ofstream out(o.report);
         out << report.dump(2) << "\n";
@@ -157,6 +166,11 @@ int main(int argc, char** argv) {
                      creature.sculpt.triangleCount(), disp.image.width, disp.image.height, disp.scale, disp.bias,
                      static_cast<unsigned long long>(baked.stats.misses),
                      static_cast<unsigned long long>(baked.stats.texelsCovered));
+        if (creature.far) {
+            std::fprintf(stderr, "  far mesh %u triangles (%s), error %.4f of the extent (%.4f m)\n",
+                         creature.far->mesh.triangleCount(), character::farMeshMethodName(creature.far->method),
+                         creature.far->relativeError, creature.far->absoluteError);
+        }
     }
     return 0;
 }

@@ -11,6 +11,7 @@
 #include "UvAtlas.h"
 #include "UvTangents.h"
 #include "creature/CreatureParams.h"
+#include "tessera/character/FarMesh.h"
 
 #include <string>
 
@@ -78,6 +79,14 @@ Creature generateCreature(const CreatureOptions& options, const ProgressFn& prog
     asset.cage.bindings = makeBindings(asset.skeleton);
     asset.clips.push_back(makeWalkClip(params));
     asset.clips.push_back(makeIdleClip(params));
+    // The crowd's far tier: the cage simplified to a few hundred triangles
+    // with the same palette, made here at content build time so the game
+    // loads it instead of simplifying at startup. A generated cage is always
+    // valid input; should it ever fail, the loader makes one instead.
+    if (Result<character::FarMesh> far = character::simplifyCage(asset.cage); far.ok()) {
+        creature.far = far.value();
+        asset.farMesh = creature.far->mesh;
+    }
 
     creature.sculpt = makeSculpt(welded, sdf, skin, options.sculptTriangles, [&](float f) { report("sculpt", f); });
     report("texture", 0.0f);

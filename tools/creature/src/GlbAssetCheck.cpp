@@ -56,6 +56,34 @@ Status checkCage(const character::CharacterAsset& asset, const std::string& file
     return {};
 }
 
+// The far mesh is drawn with the cage's palette: it must index it the same way.
+Status checkFarMesh(const character::CharacterAsset& asset, const std::string& file) {
+    if (!asset.farMesh) return {};
+    const character::CageMesh& far = *asset.farMesh;
+    if (far.vertices.empty() || far.indices.empty()) return fail(file, ": the far mesh has no triangles");
+    if (far.indices.size() % 3 != 0) return fail(file, ": the far mesh's index count is not a multiple of 3");
+    for (uint32_t i : far.indices) {
+        if (i >= far.vertices.size()) return fail(file, ": a far mesh index is beyond its vertices");
+    }
+    if (far.bindings.size() != asset.cage.bindings.size()) return fail(file, ": the far mesh's palette differs from the cage's");
+    for (size_t b = 0; b < far.bindings.size(); ++b) {
+        if (far.bindings[b].node != asset.cage.bindings[b].node ||
+            far.bindings[b].inverseBind != asset.cage.bindings[b].inverseBind)
+            return fail(file, ": the far mesh's palette differs from the cage's at entry ", to_string(b));
+    }
+    for (size_t v = 0; v < far.vertices.size(); ++v) {
+        const character::CageVertex& x = far.vertices[v];
+        if (!finite(x.position) || !finite(x.normal) || !finite(x.tangent) || !finite(x.uv) || !finite(x.weights))
+            return fail(file, ": far mesh vertex ", to_string(v), " has a non-finite value");
+        for (int c = 0; c < 4; ++c) {
+            if (!far.bindings.empty() && x.joints[c] >= far.bindings.size())
+                return fail(file, ": far mesh vertex ", to_string(v), " uses joint ", to_string(x.joints[c]),
+                            " of a palette of ", to_string(far.bindings.size()));
+        }
+    }
+    return {};
+}
+
 Status checkClips(const character::CharacterAsset& asset, const std::string& file) {
     for (const character::AnimationClip& clip : asset.clips) {
         for (size_t c = 0; c < clip.channels.size(); ++c) {
@@ -109,6 +137,7 @@ Status checkCharacter(const character::CharacterAsset& asset, const std::string&
         }
     }
     if (Status s = checkCage(asset, file); !s) return s;
+    if (Status s = checkFarMesh(asset, file); !s) return s;
     if (Status s = checkClips(asset, file); !s) return s;
     return checkMaps(asset, file);
 }

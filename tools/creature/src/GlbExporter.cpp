@@ -18,6 +18,10 @@ namespace {
 using nlohmann::json;
 
 constexpr int kLinear = 9729;
+// MSFT_lod's screen-coverage hint (extras.MSFT_screencoverage): the cage
+// from full coverage down to 2%, the far mesh from 2% to 0 (never culled).
+// A hint for other readers only; the crowd picks its tiers itself.
+constexpr double kFarScreenCoverage = 0.02;
 constexpr int kClampToEdge = 33071;
 
 json nodeJson(const character::SkeletonNode& node) {
@@ -81,7 +85,19 @@ void writeNodesAndSkin(GlbBuilder& glb, const character::CharacterAsset& asset, 
     json meshNode = {{"name", asset.name.empty() ? "cage" : asset.name}, {"mesh", 0}};
     if (skinned) meshNode["skin"] = 0;
     roots.push_back(out.size());
+    // The far mesh is an MSFT_lod level: a node outside the scene (readers
+    // without the extension see only the cage) with mesh 1 and the same skin.
+    const size_t farNode = out.size() + 1;
+    if (asset.farMesh) {
+        meshNode["extensions"] = {{"MSFT_lod", {{"ids", json::array({farNode})}}}};
+        meshNode["extras"] = {{"MSFT_screencoverage", json::array({kFarScreenCoverage, 0.0})}};
+    }
     out.push_back(std::move(meshNode));
+    if (asset.farMesh) {
+        json far = {{"name", (asset.name.empty() ? std::string("cage") : asset.name) + "_far"}, {"mesh", 1}};
+        if (skinned) far["skin"] = 0;
+        out.push_back(std::move(far));
+    }
     doc["nodes"] = std::move(out);
     doc["scenes"] = json::array({{{"nodes", roots}}});
     doc["scene"] = 0;
@@ -180,10 +196,25 @@ Result<void> exportGlb(const character::CharacterAsset& asset, const std::filesy
     json mesh = {{"primitives", json::array({primitive.value()})}};
     if (!asset.name.empty()) mesh["name"] = asset.name;
     doc["meshes"] = json::array({mesh});
+    json used = json::array();
     if (options.draco) {
-        doc["extensionsUsed"] = json::array({"KHR_draco_mesh_compression"});
+        used.push_back("KHR_draco_mesh_compression");
         doc["extensionsRequired"] = json::array({"KHR_draco_mesh_compression"});
     }
+    if (asset.farMesh) {
+        // Uncompressed: a few hundred triangles are a few kilobytes, and the
+        // loader gets exactly the vertices the simplification chose (Draco
+        // would reorder and quantise them).
+        ExportOptions plain = options;
+        plain.draco = false;
+        Result<json> farPrimitive = writePrimitive(glb, *asset.farMesh, skinned, plain, name);
+        if (!farPrimitive) return farPrimitive.error();
+        json far = {{"primitives", json::array({farPrimitive.value()})}};
+        far["name"] = (asset.name.empty() ? std::string("cage") : asset.name) + "_far";
+        doc["meshes"].push_back(std::move(far));
+        used.push_back("MSFT_lod");  // optional: without it, a reader draws the cage
+    }
+    if (!used.empty()) doc["extensionsUsed"] = std::move(used);
 
     if (Status s = writeMaterial(glb, asset, name); !s) return s;
     if (json animations = writeAnimations(glb, asset.clips); !animations.empty()) doc["animations"] = animations;

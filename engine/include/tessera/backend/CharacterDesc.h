@@ -52,6 +52,16 @@ struct CharacterDrawItem {
     /// Continuous tessellation level for the whole draw (the paper's
     /// per-draw level); clamped to [1, the backend's maximum].
     float tessLevel = 1.0f;
+    /// The LOD tier it is drawn in (TS_LOD_NEAR, _MIDDLE, _FAR of
+    /// CrowdLod.h; lod::LodManager's choice). Only the near tier is
+    /// tessellated and displaced; the others draw the cage at level 1 with
+    /// the normal map.
+    uint32_t tier = 0;
+    /// Share of the instance this draw covers during a LOD cross-fade, in
+    /// (0, 1] (lod::LodDraw::coverage), and whether it is the copy of the
+    /// tier the instance fades out of.
+    float coverage = 1.0f;
+    bool fadingOut = false;
 };
 
 struct CharacterDrawInfo {
@@ -60,6 +70,8 @@ struct CharacterDrawInfo {
     /// Displace along the interpolated normal by the asset's displacement map
     /// (when it has one); false draws the interpolated cage surface.
     bool displacement = true;
+    /// Tint each instance by its LOD tier (--lod-colors).
+    bool lodColors = false;
 };
 
 } // namespace tessera::backend

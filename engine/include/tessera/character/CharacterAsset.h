@@ -36,6 +36,12 @@ struct CharacterAsset {
     std::optional<TextureImage> baseColor;  ///< Rgba8, sRGB
     std::optional<TextureImage> normalMap;  ///< Rgba8, tangent space of the cage, same frame as the displacement
     std::optional<DisplacementMap> displacement;
+    /// The far LOD tier's simplified mesh (a few hundred triangles, see
+    /// FarMesh.h), drawn by the crowd's far tier without tessellation. It has
+    /// the same `bindings` as `cage`, so the cage's skinning palette poses it.
+    /// Every loaded character has one (read from the file's MSFT_lod level,
+    /// else made at load time).
+    std::optional<CageMesh> farMesh;
 };
 
 } // namespace tessera::character

@@ -5,9 +5,11 @@
 
 #include "creature/SculptMesh.h"
 #include "tessera/character/CharacterAsset.h"
+#include "tessera/character/FarMesh.h"
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 
 namespace tessera::creature {
 
@@ -30,6 +32,9 @@ struct Creature {
     character::CharacterAsset asset;
     /// The detailed sculpt (wrinkles, warts, bumps) the maps are baked from.
     SculptMesh sculpt;
+    /// How the far mesh (`asset.farMesh`) was simplified from the cage: its
+    /// method and error, for the report.
+    std::optional<character::FarMesh> far;
 };
 
 /// Progress callback: a stage name and its fraction done in [0, 1].
@@ -41,7 +46,8 @@ using ProgressFn = std::function<void(const char* stage, float fraction)>;
 /// surface (marching tetrahedra, ~7 mm grid); "cage" simplifies it to the
 /// target (meshoptimizer), builds the UV atlas (axis-facing charts, shelf
 /// packed with a 10-texel gutter at 2048), normals, tangents and skin
-/// weights; "sculpt" subdivides the cage and projects it onto the detailed
+/// weights, then simplifies the cage into the far LOD mesh
+/// (character::simplifyCage, 300 triangles); "sculpt" subdivides the cage and projects it onto the detailed
 /// skin; "texture" paints the base colour into the atlas.
 Creature generateCreature(const CreatureOptions& options, const ProgressFn& progress = {});
 

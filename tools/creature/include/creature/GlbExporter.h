@@ -30,7 +30,11 @@ struct ExportOptions {
 /// primitive, one material, one animation per non-empty clip. Maps are
 /// embedded PNGs (the displacement map 16-bit grayscale); the displacement
 /// scale and bias are the material's `extras.tessera_displacement`
-/// (docs/CHARACTERS.md). The same asset and options give the same bytes.
+/// (docs/CHARACTERS.md). An `asset.farMesh` becomes an MSFT_lod level (an
+/// optional extension): a second, uncompressed mesh on a node outside the
+/// scene with the same skin, named in the mesh node's
+/// `extensions.MSFT_lod.ids`, with `extras.MSFT_screencoverage`.
+/// The same asset and options give the same bytes.
 /// Fails, naming the file, on an asset that would make an invalid file or
 /// on a file that cannot be written.
 Result<void> exportGlb(const character::CharacterAsset& asset, const std::filesystem::path& file,

@@ -1,0 +1,24 @@
+#include "LodSettings.h"
+
+namespace tessera::demo {
+
+lod::LodPolicy measureEveryCharacter() {
+    lod::LodPolicy policy;
+    policy.nearPixels = policy.farPixels = 0.5f;
+    policy.fadeFrames = 0;
+    policy.budget.maxNearInstances = lod::LodBudget::kUnlimited;
+    policy.budget.maxTessellatedTriangles = UINT64_MAX;
+    return policy;
+}
+
+Result<lod::LodPolicy> lodPolicyFor(const DemoOptions& options, lod::DeviceClass device) {
+    lod::LodPolicy policy = options.characterLevel ? measureEveryCharacter() : lod::LodPolicy::forDevice(device);
+    if (options.lodNear) policy.nearPixels = *options.lodNear;
+    if (options.lodFar) policy.farPixels = *options.lodFar;
+    if (options.lodBudget) policy.budget.maxTessellatedTriangles = *options.lodBudget;
+    if (options.lodNearMax) policy.budget.maxNearInstances = *options.lodNearMax;
+    if (Status ok = policy.validate(); !ok) return ok.error();
+    return policy;
+}
+
+} // namespace tessera::demo
