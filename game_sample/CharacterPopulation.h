@@ -6,6 +6,7 @@
 
 #include "CharacterAssets.h"
 #include "CharacterPoser.h"
+#include "InstancedCrowd.h"
 #include "tessera/backend/CharacterDesc.h"
 #include "tessera/scene/Camera.h"
 #include "tessera/scene/CameraPose.h"
@@ -26,6 +27,13 @@ public:
     virtual std::span<const backend::CharacterDrawItem> items() const = 0;
     /// The scene's camera at `seconds` (unless --camera fixes it).
     virtual scene::CameraPose orbitPose(double seconds) const = 0;
+
+    /// The instanced crowd this population can be drawn as
+    /// (Backend::drawCrowd), or null when it draws only through items().
+    virtual InstancedCrowd* instancedCrowd() { return nullptr; }
+    /// From now on update() fills instancedCrowd() instead of items() (the
+    /// backend made the crowd).
+    virtual void useInstancedCrowd() {}
 };
 
 } // namespace tessera::demo

@@ -5,6 +5,7 @@
 #include "CrowdBenchmark.h"
 #include "DemoOutputs.h"
 #include "DemoScene.h"
+#include "InstancedCrowd.h"
 #include "LodSettings.h"
 #include "RenderSession.h"
 #include "TerrainBenchmark.h"
@@ -13,6 +14,7 @@
 #include "tessera/profiler/CpuScope.h"
 #include "tessera/profiler/Profiler.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace tessera::demo {
@@ -54,6 +56,20 @@ Status runFlythrough(const DemoOptions& options) {
                         formatNumber(session.maxCharacterLevel()));
         if (Status ok = session.createCharacters(characters->assets()); !ok) return ok.error();
     }
+    // The crowd scene draws as one instanced crowd where the backend culls
+    // and bins crowds on the GPU, through the character path elsewhere.
+    InstancedCrowd* instanced = characters ? characters->instancedCrowd() : nullptr;
+    if (instanced && !session.capabilities().crowd) instanced = nullptr;
+    if (instanced) {
+        const SimulatedCrowd* simulated = scene.simulatedCrowd();
+        const uint32_t agents = simulated ? simulated->crowd().stats().agents : 0;
+        if (Status ok = session.createCrowd(instanced->desc(characters->assets(), std::max(agents, 1u), lodPolicy)); !ok)
+            return ok.error();
+        characters->useInstancedCrowd();
+    }
+    if (const SimulatedCrowd* simulated = scene.simulatedCrowd())
+        std::printf("%s\n",
+                    simulated->drawingMode(session.capabilities().name, session.capabilities().requiresGpu).c_str());
 
     scene::Camera camera;
     uint32_t rendered = 0;
@@ -67,17 +83,29 @@ Status runFlythrough(const DemoOptions& options) {
             camera.setAspect(float(session.width()) / float(session.height()));
         }
         backend::CharacterDrawInfo draw;
+        backend::CrowdDrawInfo crowdDraw;
         if (characters) {
             characters->update(frame * DemoScene::kSecondsPerFrame, camera,
                                {session.height(), session.maxCharacterLevel(), options.characterLevel, lodPolicy});
             draw = {characters->items(), options.characterPath, options.displacement, options.lodColors};
+            if (instanced) crowdDraw = instanced->drawInfo(options.displacement, options.lodColors);
         }
         const bool last = frame + 1 == frames;
         session.renderFrame(frame, camera, settings.value(), options.clearColor, options.wireframe,
-                            last && !options.screenshot.empty(), characters ? &draw : nullptr);
+                            last && !options.screenshot.empty(), characters ? &draw : nullptr,
+                            instanced ? &crowdDraw : nullptr);
         profiler.endFrame();
     }
     const std::vector<uint8_t> pixels = session.finish();
+    if (!options.crowdTiers.empty()) {
+        if (!instanced) return fail("--crowd-tiers: backend ", session.capabilities().name,
+                                    " draws no instanced crowd here (it needs --scene crowd)");
+        auto tiers = session.readCrowdTiers();
+        if (!tiers) return tiers.error();
+        if (Status ok = instanced->writeTiers(options.crowdTiers, session.capabilities().name, tiers.value()); !ok)
+            return ok.error();
+        log::info("wrote " + options.crowdTiers);
+    }
     if (options.meteors) log::info(std::to_string(scene.impactsLanded()) + " meteor impacts landed");
     if (const SimulatedCrowd* crowd = scene.simulatedCrowd()) std::printf("%s\n", crowd->summary().c_str());
     return writeOutputs(options, session, scene.terrain(), pixels, rendered);

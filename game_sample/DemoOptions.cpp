@@ -155,6 +155,9 @@ Scene:
                         1024 on a GPU, 4 on lavapipe)
   --lod-colors          tint characters by LOD tier: near green, middle
                         yellow, far red
+  --crowd-tiers FILE    write the last frame's crowd agents per LOD tier,
+                        as the backend binned them and as the CPU
+                        reference did (JSON; the crowd scene)
   --heightmap FILE      8- or 16-bit grayscale PNG height map (default: the
                         generated content/terrain/height.png)
   --content DIR         content directory
@@ -336,6 +339,7 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         else if (flag == "--capture") { TESSERA_TAKE(v); o.capture = v; }
         else if (flag == "--benchmark") { TESSERA_TAKE(v); o.benchmark = v; }
         else if (flag == "--dump-heights") { TESSERA_TAKE(v); o.dumpHeights = v; }
+        else if (flag == "--crowd-tiers") { TESSERA_TAKE(v); o.crowdTiers = v; }
         else if (flag == "--out") { TESSERA_TAKE(v); o.benchOut = v; }
         else if (flag == "--out-dir") { TESSERA_TAKE(v); o.benchOutDir = v; }
         else if (flag == "--bench") {

@@ -42,6 +42,9 @@ struct DemoOptions {
     std::string capture;                ///< Chrome trace JSON
     std::string benchmark;              ///< benchmark JSON
     std::string dumpHeights;            ///< --dump-heights PREFIX: PREFIX.gpu.png and PREFIX.cpu.png
+    /// --crowd-tiers FILE: the last frame's crowd agents per LOD tier as the
+    /// backend binned them and as the CPU reference did (JSON).
+    std::string crowdTiers;
 
     /// --terrain-mode; unset: adaptive where the backend draws it, else lowres.
     std::optional<terrain::TerrainMode> terrainMode;

@@ -120,6 +120,19 @@ Status RenderSession::createCharacters(CharacterAssets& assets) {
     return {};
 }
 
+Status RenderSession::createCrowd(const backend::CrowdDesc& desc) {
+    TESSERA_CPU_SCOPE("load.crowdUpload");
+    auto handle = mSelected->backend->createCrowd(desc);
+    if (!handle) return fail("backend ", capabilities().name, ": ", handle.error().message);
+    mCrowd = handle.value();
+    return {};
+}
+
+Result<backend::CrowdTiers> RenderSession::readCrowdTiers() {
+    if (!mCrowd.valid()) return Error{"no instanced crowd on backend " + capabilities().name};
+    return mSelected->backend->readCrowdTiers(mCrowd);
+}
+
 bool RenderSession::pollWindow() {
     if (!mSwapchain) return true;
     if (mSwapchain->pollEvents()) mSwapchain->recreate();
@@ -128,7 +141,8 @@ bool RenderSession::pollWindow() {
 
 void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera,
                                 const terrain::TessellationSettings& settings, const glm::vec3& clearColor,
-                                bool wireframe, bool readback, const backend::CharacterDrawInfo* characters) {
+                                bool wireframe, bool readback, const backend::CharacterDrawInfo* characters,
+                                const backend::CrowdDrawInfo* crowd) {
     backend::Backend& backend = *mSelected->backend;
     mVisible.clear();
     {
@@ -154,6 +168,7 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
         backend.splatTerrain(mTerrainHandle, splats);
         if (mTerrainVisible) backend.drawTerrain(mTerrainHandle, {mVisible, settings});
         if (characters) backend.drawCharacters(*characters);
+        if (crowd && mCrowd.valid()) backend.drawCrowd(mCrowd, *crowd);
         backend.endFrame();
     }
     if (mScheduler) {
@@ -167,6 +182,14 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
     if (characters)
         profiler.recordCounter({"character triangles", uint64_t(frameIndex), profiler.nowNs(),
                                 double(report.characterTriangles)});
+    if (crowd) {
+        // The GPU's own counts (a backend reads them back a few frames late).
+        static const char* const kTierCounters[3] = {"crowd near instances", "crowd middle instances",
+                                                     "crowd far instances"};
+        for (int t = 0; t < 3; ++t)
+            profiler.recordCounter({kTierCounters[t], uint64_t(frameIndex), profiler.nowNs(),
+                                    double(report.crowdInstances[t])});
+    }
 }
 
 std::vector<uint8_t> RenderSession::finish() {

@@ -44,6 +44,13 @@ public:
     /// (destroyed with the session). An asset the backend cannot draw is an
     /// error naming its file.
     Status createCharacters(CharacterAssets& assets);
+    /// Makes the instanced crowd on the backend (destroyed with the
+    /// session); renderFrame draws it when given its frame. An error naming
+    /// the backend when it cannot.
+    Status createCrowd(const backend::CrowdDesc& desc);
+    /// The crowd's tiers as the backend binned them in the last frame
+    /// (blocking).
+    Result<backend::CrowdTiers> readCrowdTiers();
     /// The device's class, for the LOD budget's defaults (the null
     /// backend counts what a GPU would draw).
     lod::DeviceClass deviceClass() const;
@@ -57,11 +64,13 @@ public:
     /// Handles window events; false once the window was closed.
     bool pollWindow();
     /// Records and submits one frame: pending craters into the GPU height
-    /// map, culling, the terrain draw, then `characters` when given. Reads the
-    /// image back when `readback`.
+    /// map, culling, the terrain draw, then `characters` and `crowd` (the
+    /// crowd createCrowd made) when given. Reads the image back when
+    /// `readback`.
     void renderFrame(uint32_t frameIndex, const scene::Camera& camera, const terrain::TessellationSettings& settings,
                      const glm::vec3& clearColor, bool wireframe, bool readback,
-                     const backend::CharacterDrawInfo* characters = nullptr);
+                     const backend::CharacterDrawInfo* characters = nullptr,
+                     const backend::CrowdDrawInfo* crowd = nullptr);
     /// Waits for the GPU; the last read-back image (RGBA8), empty if none.
     std::vector<uint8_t> finish();
     /// The backend's own account of its last recorded frame (intermediate
@@ -82,6 +91,7 @@ private:
     std::unique_ptr<gpu::FrameScheduler> mScheduler;
     backend::TerrainHandle mTerrainHandle;
     std::vector<backend::CharacterHandle> mCharacters;
+    backend::CrowdHandle mCrowd;
     bool mTerrainVisible = true;
     uint32_t mWidth = 0;
     uint32_t mHeight = 0;

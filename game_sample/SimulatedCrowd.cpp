@@ -60,6 +60,10 @@ Result<std::unique_ptr<SimulatedCrowd>> SimulatedCrowd::create(const DemoOptions
     self->mGait = std::move(gait.value());
     log::info(describeGait(self->mGait, self->mAssets));
 
+    auto instanced = InstancedCrowd::create(self->mAssets);
+    if (!instanced) return instanced.error();
+    self->mInstanced = std::move(instanced.value());
+
     auto planned = planCrowd(terrain, self->settings(options.threads), agents, self->spawnPattern(options.seed));
     if (!planned) return planned.error();
     self->mLayout = std::move(planned.value().layout);
@@ -74,11 +78,7 @@ Result<std::unique_ptr<SimulatedCrowd>> SimulatedCrowd::create(const DemoOptions
                     height,
                     kLookHeight,
                     kOrbitClearance * height};
-    const std::string drawn = self->mDrawCount ? "the " + std::to_string(self->mDrawCount) +
-                                                     " nearest in view drawn with the character path until instanced "
-                                                     "crowd rendering lands"
-                                               : "none drawn (--crowd-draw 0)";
-    std::printf("crowd: %u agents on %s, %s\n", agents, describeLayout(self->mLayout).c_str(), drawn.c_str());
+    std::printf("crowd: %u agents on %s\n", agents, describeLayout(self->mLayout).c_str());
     std::fflush(stdout);
     return self;
 }
@@ -110,6 +110,15 @@ crowd::SpawnPattern SimulatedCrowd::spawnPattern(uint32_t seed) const {
     pattern.speedMin = mGait.naturalSpeed * (1.0f - kSpeedSpread);
     pattern.speedMax = mGait.naturalSpeed * (1.0f + kSpeedSpread);
     return pattern;
+}
+
+std::string SimulatedCrowd::drawingMode(const std::string& backend, bool gpu) const {
+    if (mInstancedActive)
+        return "crowd: every agent drawn instanced, culled and sorted into LOD tiers " +
+               std::string(gpu ? "on the GPU by " : "on the CPU by ") + backend;
+    return mDrawCount ? "crowd: the " + std::to_string(mDrawCount) + " nearest in view drawn with the character path (" +
+                            backend + " draws no instanced crowds)"
+                      : "crowd: none drawn (--crowd-draw 0)";
 }
 
 void SimulatedCrowd::step() {
@@ -149,9 +158,45 @@ glm::mat4 SimulatedCrowd::agentWorld(uint32_t agent, uint32_t creature) const {
     return glm::scale(world, glm::vec3(scale));
 }
 
+void SimulatedCrowd::updateInstances(const scene::Camera& camera, const CharacterLevels& levels) {
+    const crowd::CrowdAgents& agents = mCrowd->agents();
+    const uint32_t creatures = uint32_t(mAssets.size());
+    mInstanced->begin();
+    for (uint32_t i = 0; i < agents.id.size(); ++i) {
+        const uint32_t creature = agents.id[i] % creatures;
+        const CreatureGait& gait = mGait.creatures[creature];
+        const scene::Aabb& box = mAssets[creature].box;
+        // As agentWorld: the creature grows with the agent's radius.
+        const float scale = gait.scale * agents.radius[i] / mGait.strideRadius;
+        const glm::vec3 p = agents.position[i];
+        const glm::vec3 centre = box.center();
+        shader::CrowdInstance instance;
+        // A sphere holding the box at any heading: the box's, grown by how
+        // far its centre sits off the vertical axis.
+        instance.sphere = glm::vec4(p + glm::vec3(0.0f, scale * centre.y, 0.0f),
+                                    scale * (glm::length(box.extents()) + glm::length(glm::vec2(centre.x, centre.z))));
+        instance.placement = glm::vec4(p, agents.heading[i]);
+        instance.animation = glm::vec4(agents.phase[i], scale, 0.0f, 0.0f);
+        const int clip = agents.clip[i] == crowd::AgentClip::Walk ? gait.walkClip : gait.idleClip;
+        // Variety, as the Froblins had: every agent its own shade.
+        const uint32_t h = agents.id[i] * 2654435761u;
+        const uint32_t tint = (215u + ((h >> 8) & 31u)) | ((215u + ((h >> 16) & 31u)) << 8) |
+                              ((215u + ((h >> 24) & 31u)) << 16) | (255u << 24);
+        instance.ids = glm::uvec4(agents.id[i], creature, mInstanced->bakedClip(creature, clip), tint);
+        mInstanced->add(instance);
+    }
+    lod::LodPolicy policy = levels.lod;
+    policy.fixedLevel = levels.fixedLevel.value_or(0.0f);
+    mInstanced->select(lod::LodView::fromCamera(camera, levels.viewportHeight, levels.maxLevel), policy);
+}
+
 void SimulatedCrowd::update(double, const scene::Camera& camera, const CharacterLevels& levels) {
     TESSERA_CPU_SCOPE("crowd.draw");
     mPoser.begin(camera, levels);
+    if (mInstancedActive) {
+        mPoser.finish(mAssets);
+        return updateInstances(camera, levels);
+    }
     if (mDrawCount == 0) return mPoser.finish(mAssets);
     const scene::Frustum frustum = camera.frustum();
     const crowd::CrowdAgents& agents = mCrowd->agents();

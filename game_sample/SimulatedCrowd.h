@@ -45,10 +45,16 @@ public:
     /// What the run did, in one line: steps, agents walking, fleeing and
     /// stuck, arrivals, mean step time.
     std::string summary() const;
+    /// How the crowd is drawn on `backend` (`gpu`: one that needs a GPU), in one line.
+    std::string drawingMode(const std::string& backend, bool gpu) const;
 
     CharacterAssets& assets() override { return mAssets; }
-    /// Draws the --crowd-draw agents nearest the camera among those in view.
+    /// Instanced (useInstancedCrowd): every agent an instance, tiers by the
+    /// LOD manager. Otherwise the --crowd-draw agents nearest the camera
+    /// among those in view, through the character path.
     void update(double seconds, const scene::Camera& camera, const CharacterLevels& levels) override;
+    InstancedCrowd* instancedCrowd() override { return mInstanced.get(); }
+    void useInstancedCrowd() override { mInstancedActive = mInstanced != nullptr; }
     std::span<const backend::CharacterDrawItem> items() const override { return mPoser.items(); }
     /// Circling the spawn's centre (--orbit-distance, default 30 m), high
     /// enough to look over the agents.
@@ -68,6 +74,8 @@ private:
     /// Radii around the gait's stride radius, speeds around its natural speed.
     crowd::SpawnPattern spawnPattern(uint32_t seed) const;
     glm::mat4 agentWorld(uint32_t agent, uint32_t creature) const;
+    /// Every agent as an instance of the instanced crowd, and its LOD selection.
+    void updateInstances(const scene::Camera& camera, const CharacterLevels& levels);
 
     const terrain::Terrain* mTerrain = nullptr;
     CharacterAssets mAssets;
@@ -76,6 +84,8 @@ private:
     std::vector<Reach> mReach;
     crowd::CrowdLayout mLayout;
     std::unique_ptr<crowd::Crowd> mCrowd;
+    std::unique_ptr<InstancedCrowd> mInstanced;
+    bool mInstancedActive = false;
     CameraOrbit mOrbit;
     uint32_t mDrawCount = 0;
     double mStepMs = 0.0; ///< summed over every step

@@ -119,6 +119,16 @@ void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& dra
     ++mReport.passes;
 }
 
+Result<backend::CrowdHandle> BasicCharacterBackend::createCrowd(const backend::CrowdDesc&) {
+    return fail("backend ", capabilities(nullptr).name,
+                " does not draw instanced crowds yet (GPU culling and LOD binning run on hulldomain); draw the crowd "
+                "with drawCharacters");
+}
+
+Result<backend::CrowdTiers> BasicCharacterBackend::readCrowdTiers(backend::CrowdHandle) {
+    return fail("backend ", capabilities(nullptr).name, " draws no instanced crowds");
+}
+
 CharacterPushFn BasicCharacterBackend::characterPush() {
     return [this](VkPipelineBindPoint point, CharacterBindings bindings, const gpu::PipelineLayout& layout,
                   const CharacterInstance& instance, std::span<const VkWriteDescriptorSet> extra) {

@@ -55,6 +55,14 @@ public:
     void drawCharacters(const backend::CharacterDrawInfo& draw) override;
     void shutdown() override;
 
+    // Instanced crowds: a backend that culls and bins them on the GPU
+    // overrides these (and sets BackendCapabilities::crowd); the others
+    // refuse, and hosts draw their crowds through drawCharacters.
+    Result<backend::CrowdHandle> createCrowd(const backend::CrowdDesc& desc) override;
+    void destroyCrowd(backend::CrowdHandle) override {}
+    void drawCrowd(backend::CrowdHandle, const backend::CrowdDrawInfo&) override {}
+    Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle crowd) override;
+
 protected:
     /// Buffer usage pass 1 writes compressed cages with (storage for compute,
     /// transform feedback, transfer destination for a render-target copy).
@@ -77,9 +85,9 @@ protected:
     /// pushCharacterDescriptors as a callable for the pass objects.
     CharacterPushFn characterPush();
 
-private:
     GpuCharacter* findCharacter(backend::CharacterHandle handle);
 
+private:
     std::vector<std::unique_ptr<GpuCharacter>> mCharacters;
 };
 

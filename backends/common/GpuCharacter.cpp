@@ -75,29 +75,12 @@ Result<std::unique_ptr<GpuCharacter>> GpuCharacter::create(gpu::Device& device, 
     c->mBoxMin = desc.box.min - pad;
     c->mBoxMax = desc.box.max + pad;
 
-    std::vector<shader::CharacterVertex> gpuVertices(cage.vertices.size());
+    auto converted = convertVertices(cage, cage.bindings.size(), name);
+    if (!converted) return converted.error();
+    const std::vector<shader::CharacterVertex>& gpuVertices = converted.value();
     glm::vec2 uvMin(FLT_MAX), uvMax(-FLT_MAX);
     size_t negative = 0;
-    for (size_t i = 0; i < cage.vertices.size(); ++i) {
-        const character::CageVertex& v = cage.vertices[i];
-        for (int k = 0; k < 4; ++k)
-            if (v.weights[k] > 0.0f && v.joints[k] >= cage.bindings.size())
-                return Error{name + ": vertex " + std::to_string(i) + " uses joint " + std::to_string(v.joints[k]) +
-                             " of " + std::to_string(cage.bindings.size())};
-        shader::CharacterVertex& g = gpuVertices[i];
-        g.positionU = glm::vec4(v.position, v.uv.x);
-        g.normalV = glm::vec4(v.normal, v.uv.y);
-        g.tangent = v.tangent;
-        // Unused influences may hold any index; point them at joint 0 so the
-        // shader never reads past the palette.
-        g.joints = glm::uvec4(v.weights.x > 0.0f ? v.joints.x : 0, v.weights.y > 0.0f ? v.joints.y : 0,
-                              v.weights.z > 0.0f ? v.joints.z : 0, v.weights.w > 0.0f ? v.joints.w : 0);
-        // Normalised here, once, as character::skinVertex normalises per
-        // vertex: glTF only promises sums near 1. A vertex with no weight
-        // follows joint 0 (the CPU reference keeps it in place; the loader
-        // gives every skinless mesh one identity joint, so the two agree).
-        const float sum = v.weights.x + v.weights.y + v.weights.z + v.weights.w;
-        g.weights = sum > 0.0f ? v.weights / sum : glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+    for (const character::CageVertex& v : cage.vertices) {
         uvMin = glm::min(uvMin, v.uv);
         uvMax = glm::max(uvMax, v.uv);
         negative += v.tangent.w < 0.0f ? 1 : 0;
@@ -121,6 +104,8 @@ Result<std::unique_ptr<GpuCharacter>> GpuCharacter::create(gpu::Device& device, 
                               VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
                               gpu::MemoryUsage::GpuOnly, name + ".cageIndices");
     c->mIndices.upload(std::span<const uint32_t>(cage.indices));
+    c->mGpuVertices = gpuVertices;
+    c->mCageIndices = cage.indices;
 
     const TextureImage grey = constantTexture(TextureFormat::Rgba8, {150, 150, 150, 255});
     const TextureImage flat = constantTexture(TextureFormat::Rgba8, {128, 128, 255, 255});
@@ -131,6 +116,7 @@ Result<std::unique_ptr<GpuCharacter>> GpuCharacter::create(gpu::Device& device, 
     // UNORM, not SRGB: the frame is lit and stored in display space (an UNORM
     // target, no output transfer), as the terrain's colours are; decoding
     // the albedo to linear here would darken characters against the terrain.
+    c->mHasNormalMap = usable(asset.normalMap, TextureFormat::Rgba8);
     c->mBaseColor = makeImage(device, usable(asset.baseColor, TextureFormat::Rgba8) ? *asset.baseColor : grey,
                               VK_FORMAT_R8G8B8A8_UNORM, name + ".baseColor");
     c->mNormalMap = makeImage(device, usable(asset.normalMap, TextureFormat::Rgba8) ? *asset.normalMap : flat,
@@ -148,6 +134,34 @@ Result<std::unique_ptr<GpuCharacter>> GpuCharacter::create(gpu::Device& device, 
     c->mStaticBytes = vertexBytes + c->mIndices.size() + textureBytes(c->mBaseColor, 4) +
                       textureBytes(c->mNormalMap, 4) + textureBytes(c->mDisplacement, 2);
     return c;
+}
+
+Result<std::vector<shader::CharacterVertex>> GpuCharacter::convertVertices(const character::CageMesh& mesh,
+                                                                            size_t paletteSize,
+                                                                            const std::string& name) {
+    std::vector<shader::CharacterVertex> gpuVertices(mesh.vertices.size());
+    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+        const character::CageVertex& v = mesh.vertices[i];
+        for (int k = 0; k < 4; ++k)
+            if (v.weights[k] > 0.0f && v.joints[k] >= paletteSize)
+                return Error{name + ": vertex " + std::to_string(i) + " uses joint " + std::to_string(v.joints[k]) +
+                             " of " + std::to_string(paletteSize)};
+        shader::CharacterVertex& g = gpuVertices[i];
+        g.positionU = glm::vec4(v.position, v.uv.x);
+        g.normalV = glm::vec4(v.normal, v.uv.y);
+        g.tangent = v.tangent;
+        // Unused influences may hold any index; point them at joint 0 so the
+        // shader never reads past the palette.
+        g.joints = glm::uvec4(v.weights.x > 0.0f ? v.joints.x : 0, v.weights.y > 0.0f ? v.joints.y : 0,
+                              v.weights.z > 0.0f ? v.joints.z : 0, v.weights.w > 0.0f ? v.joints.w : 0);
+        // Normalised here, once, as character::skinVertex normalises per
+        // vertex: glTF only promises sums near 1. A vertex with no weight
+        // follows joint 0 (the CPU reference keeps it in place; the loader
+        // gives every skinless mesh one identity joint, so the two agree).
+        const float sum = v.weights.x + v.weights.y + v.weights.z + v.weights.w;
+        g.weights = sum > 0.0f ? v.weights / sum : glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+    }
+    return gpuVertices;
 }
 
 CompressedCage& GpuCharacter::compressed(uint32_t slot, uint32_t instance) {

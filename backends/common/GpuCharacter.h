@@ -7,6 +7,7 @@
 
 #include "CharacterUniforms.h"
 #include "tessera/backend/CharacterDesc.h"
+#include "tessera/character/CageMesh.h"
 #include "tessera/core/Result.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/BufferView.h"
@@ -67,6 +68,25 @@ public:
     /// Bytes of the cage, index and map resources (not the per-frame caches).
     uint64_t staticBytes() const { return mStaticBytes; }
 
+    /// What an instanced crowd copies into its own buffers and records: the
+    /// cage as the GPU reads it, its triangles, and the numbers
+    /// CharacterUniforms carries for a single draw.
+    const std::vector<shader::CharacterVertex>& gpuVertices() const { return mGpuVertices; }
+    const std::vector<uint32_t>& cageIndices() const { return mCageIndices; }
+    glm::vec3 boxMin() const { return mBoxMin; }
+    glm::vec3 boxMax() const { return mBoxMax; }
+    glm::vec4 uvRange() const { return mUvRange; }
+    bool negativeHandedness() const { return mNegativeHandedness; }
+    float displacementScale() const { return mHasDisplacement ? mDisplacementScale : 0.0f; }
+    float displacementBias() const { return mHasDisplacement ? mDisplacementBias : 0.0f; }
+    bool hasNormalMap() const { return mHasNormalMap; }
+
+    /// A cage (or a mesh sharing its bindings, such as the far mesh) as the
+    /// GPU reads it: weights normalised, unused joints pointed at 0. Fails
+    /// naming `name` when a vertex uses a joint past `paletteSize`.
+    static Result<std::vector<shader::CharacterVertex>> convertVertices(const character::CageMesh& mesh,
+                                                                        size_t paletteSize, const std::string& name);
+
 private:
     GpuCharacter() = default;
 
@@ -84,6 +104,9 @@ private:
     glm::vec4 mUvRange{0.0f, 0.0f, 1.0f, 1.0f};
     VkBufferUsageFlags mCompressedUsage = 0;
     uint64_t mStaticBytes = 0;
+    bool mHasNormalMap = false;
+    std::vector<shader::CharacterVertex> mGpuVertices;
+    std::vector<uint32_t> mCageIndices;
 
     gpu::Buffer mVertices;
     gpu::BufferView mVertexTexels;

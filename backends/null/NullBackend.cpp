@@ -3,6 +3,9 @@
 // it and counts what a real backend would draw, so tests of the data model
 // (scene, culling, tessellation levels, splats) run anywhere, CI included.
 #include "CrowdLod.h"
+#include "NullCrowd.h"
+#include "tessera/backend/CrowdChecks.h"
+#include "tessera/character/BakedAnimation.h"
 #include "tessera/backend/PluginApi.h"
 #include "tessera/character/CharacterAsset.h"
 #include "tessera/tessellator/ContinuousLevel.h"
@@ -14,6 +17,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace tessera::backends {
@@ -48,6 +53,7 @@ public:
         caps.description = "no GPU: runs the frame logic and counts what would be drawn";
         caps.requiresGpu = false;
         caps.maxTessFactor = kMaxTessFactor;
+        caps.crowd = true;
         caps.terrainModes = (1u << uint32_t(terrain::TerrainMode::LowRes)) |
                             (1u << uint32_t(terrain::TerrainMode::Continuous)) |
                             (1u << uint32_t(terrain::TerrainMode::Adaptive));
@@ -62,6 +68,7 @@ public:
     void shutdown() override {
         mTerrains.clear();
         mCharacters.clear();
+        mCrowds.clear();
         mInitialized = false;
     }
 
@@ -105,6 +112,43 @@ public:
             mReport.trianglesSubmitted += triangles;
         }
         if (!draw.items.empty()) ++mReport.passes;
+    }
+
+    Result<backend::CrowdHandle> createCrowd(const backend::CrowdDesc& desc) override {
+        if (!mInitialized) return fail("null backend: createCrowd before initialize");
+        if (Status ok = backend::checkCrowdDesc(desc); !ok) return ok.error();
+        std::vector<NullCrowd::Creature> creatures;
+        for (const backend::CrowdCharacterDesc& c : desc.characters) {
+            const character::CharacterAsset* asset = c.character.id < mCharacters.size() ? mCharacters[c.character.id]
+                                                                                         : nullptr;
+            if (!asset) return fail("createCrowd: character ", std::to_string(c.character.id), " does not exist");
+            creatures.push_back({asset->cage.triangleCount(), c.farMesh->triangleCount(), c.levelPerPixel});
+        }
+        mCrowds.push_back(std::make_unique<NullCrowd>(std::move(creatures), uint32_t(desc.animation->clips.size()),
+                                                      desc.maxInstances, desc.maxIds));
+        return backend::CrowdHandle{static_cast<uint32_t>(mCrowds.size() - 1)};
+    }
+
+    void destroyCrowd(backend::CrowdHandle crowd) override {
+        if (crowd.valid() && crowd.id < mCrowds.size()) mCrowds[crowd.id].reset();
+    }
+
+    void drawCrowd(backend::CrowdHandle handle, const backend::CrowdDrawInfo& draw) override {
+        NullCrowd* crowd = handle.valid() && handle.id < mCrowds.size() ? mCrowds[handle.id].get() : nullptr;
+        if (!crowd) return;
+        const backend::CrowdTierCounts counts = crowd->draw(draw);
+        for (uint32_t t = 0; t < TS_LOD_TIERS; ++t) {
+            mReport.crowdInstances[t] += counts.instances[t];
+            mReport.crowdTriangles[t] += counts.triangles[t];
+            mReport.trianglesSubmitted += counts.triangles[t];
+        }
+        mReport.passes += 1 + TS_LOD_TIERS;
+    }
+
+    Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle handle) override {
+        NullCrowd* crowd = handle.valid() && handle.id < mCrowds.size() ? mCrowds[handle.id].get() : nullptr;
+        if (!crowd) return fail("readCrowdTiers: no such crowd");
+        return crowd->tiers();
     }
 
     void beginFrame(const backend::FrameInfo& frame) override {
@@ -159,6 +203,7 @@ private:
 
     std::vector<const terrain::Terrain*> mTerrains; ///< null once destroyed
     std::vector<const character::CharacterAsset*> mCharacters; ///< null once destroyed
+    std::vector<std::unique_ptr<NullCrowd>> mCrowds;           ///< null once destroyed
     terrain::TessView mView;
     backend::FrameReport mReport;
     backend::FrameReport mLast;

@@ -33,6 +33,14 @@ public:
     }
     void destroyCharacter(backend::CharacterHandle) override {}
     void drawCharacters(const backend::CharacterDrawInfo&) override {}
+    Result<backend::CrowdHandle> createCrowd(const backend::CrowdDesc&) override {
+        return fail("this backend draws no instanced crowds");
+    }
+    void destroyCrowd(backend::CrowdHandle) override {}
+    void drawCrowd(backend::CrowdHandle, const backend::CrowdDrawInfo&) override {}
+    Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle) override {
+        return fail("this backend draws no instanced crowds");
+    }
     void endFrame() override {}
     backend::FrameReport lastFrameReport() override { return mReport; }
 

@@ -1,6 +1,8 @@
 #version 450
 // Character shading shared by every backend (character_shading.glsl), with
 // the LOD cross-fade's dither and the --lod-colors tint (lod_fade.glsl).
+// TS_CROWD: an instanced crowd draw; the list entry comes flat from the
+// vertex or evaluation stage, with the instance's tint.
 #extension GL_GOOGLE_include_directive : require
 #include "character_shading.glsl"
 #include "lod_fade.glsl"
@@ -10,10 +12,19 @@ layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec3 inTangent;
 layout(location = 3) in vec2 inUv;
 layout(location = 0) out vec4 outColor;
+#ifdef TS_CROWD
+layout(location = 4) flat in uint inEntry;
+#endif
 
 void main() {
+#ifdef TS_CROWD
+    tsCrowdSelect(crowdLists[inEntry]);
+#endif
     if (!tsLodKeepPixel(gl_FragCoord.xy, uCharacter.lod.x, uCharacter.lod.y > 0.5)) discard;
     vec3 color = tsShadeCharacter(inWorld, inNormal, inTangent, inUv);
+#ifdef TS_CROWD
+    color *= gCrowdTint;
+#endif
     if (uCharacter.lod.w > 0.5) color *= tsLodTierTint(uint(uCharacter.lod.z));
     outColor = vec4(color, 1.0);
 }

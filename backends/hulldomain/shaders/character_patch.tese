@@ -20,6 +20,13 @@ layout(location = 2) in vec3 inTangent[];
 layout(location = 3) in vec2 inUv[];
 #endif
 
+#ifdef TS_CROWD
+layout(location = 5) patch in vec4 inWorld[4];
+layout(location = 9) patch in vec4 inDisplacement;
+layout(location = 10) patch in float inEntry;
+layout(location = 4) flat out uint outEntry;
+#endif
+
 layout(location = 0) out vec3 outWorld;
 layout(location = 1) out vec3 outNormal;
 layout(location = 2) out vec3 outTangent;
@@ -44,6 +51,13 @@ void main() {
     // w from u and v exactly as the emulated path computes it, so both get
     // the same weights from the same (u, v).
     vec3 bary = vec3(gl_TessCoord.x, gl_TessCoord.y, 1.0 - gl_TessCoord.x - gl_TessCoord.y);
+#ifdef TS_CROWD
+    // What tsEvaluateCharacter reads of the instance, from the hull stage.
+    uCharacter.world = mat4(inWorld[0], inWorld[1], inWorld[2], inWorld[3]);
+    uCharacter.worldNormal = uCharacter.world / dot(inWorld[0].xyz, inWorld[0].xyz);
+    uCharacter.displacement = inDisplacement;
+    outEntry = uint(inEntry);
+#endif
     CharacterPoint p = tsEvaluateCharacter(bary, corner(0), corner(1), corner(2));
     outWorld = p.world;
     outNormal = p.normal;

@@ -7,7 +7,30 @@
 #extension GL_GOOGLE_include_directive : require
 #include "character_common.glsl"
 
-#ifdef TS_SINGLE_PASS
+#if defined(TS_CROWD)
+// An instanced crowd's near tier: the instance's list entry gives its
+// compressed cage's slot (crowd_skin.comp wrote it) and its placement.
+layout(std430, set = 0, binding = TS_BINDING_CROWD_NEAR) readonly buffer NearBlock {
+    uvec4 nearCages[];
+};
+layout(location = 0) out vec3 outPosition;
+layout(location = 1) out vec3 outNormal;
+layout(location = 2) out vec3 outTangent;
+layout(location = 3) out vec2 outUv;
+layout(location = 4) out float outEntry;
+void main() {
+    // firstInstance is the list's base: gl_InstanceIndex is the entry.
+    uint entryIndex = uint(gl_InstanceIndex);
+    CrowdListEntry entry = crowdLists[entryIndex];
+    tsCrowdSelect(entry);
+    CageSample s = tsDecompressCageSample(nearCages[entry.slot * uCrowd.flags.z + uint(gl_VertexIndex)]);
+    outPosition = s.position;
+    outNormal = s.normal;
+    outTangent = s.tangent;
+    outUv = s.uv;
+    outEntry = float(entryIndex);
+}
+#elif defined(TS_SINGLE_PASS)
 layout(location = 0) out uint outIndex;
 void main() {
     outIndex = uint(gl_VertexIndex);

@@ -8,12 +8,22 @@
 #include "CharacterUniforms.h"
 #include "CompressedVertex.h"
 
+#ifdef TS_CROWD
+// Instanced crowd draws: uCharacter is filled per invocation from the
+// instance's list entry and the palette comes from the baked clips
+// (crowd_common.glsl), so every function below serves both.
+#include "crowd_common.glsl"
+#else
 layout(std140, set = 0, binding = TS_BINDING_CHARACTER) uniform CharacterBlock {
     CharacterUniforms uCharacter;
 };
 layout(std140, set = 0, binding = TS_BINDING_CHARACTER_PALETTE) uniform PaletteBlock {
     CharacterPalette uPalette;
 };
+mat4 tsPaletteJoint(uint joint) {
+    return uPalette.joints[joint];
+}
+#endif
 
 // One animated cage vertex in model space: what the evaluation interpolates.
 struct CageSample {
@@ -28,8 +38,8 @@ struct CageSample {
 // through the blended 3x3 and normals through its cofactor matrix, which stays
 // right under the non-uniform scale glTF animations may key; both renormalised.
 CageSample tsSkinCageVertex(CharacterVertex v) {
-    mat4 m = uPalette.joints[v.joints.x] * v.weights.x + uPalette.joints[v.joints.y] * v.weights.y +
-             uPalette.joints[v.joints.z] * v.weights.z + uPalette.joints[v.joints.w] * v.weights.w;
+    mat4 m = tsPaletteJoint(v.joints.x) * v.weights.x + tsPaletteJoint(v.joints.y) * v.weights.y +
+             tsPaletteJoint(v.joints.z) * v.weights.z + tsPaletteJoint(v.joints.w) * v.weights.w;
     mat3 linear = mat3(m);
     mat3 cofactor = mat3(cross(linear[1], linear[2]), cross(linear[2], linear[0]), cross(linear[0], linear[1]));
     if (determinant(linear) < 0.0) cofactor = -cofactor;

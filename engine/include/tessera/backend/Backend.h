@@ -21,6 +21,7 @@
 #include "tessera/backend/BackendCapabilities.h"
 #include "tessera/backend/BackendInitInfo.h"
 #include "tessera/backend/CharacterDesc.h"
+#include "tessera/backend/CrowdDesc.h"
 #include "tessera/backend/DeviceFeatures.h"
 #include "tessera/backend/FrameInfo.h"
 #include "tessera/backend/FrameReport.h"

@@ -33,6 +33,9 @@ struct BackendCapabilities {
     bool usesGeometryShaders = false;
     bool usesCompute = false;
     float maxTessFactor = 1.0f;
+    /// Draws instanced crowds with GPU culling and LOD binning (createCrowd);
+    /// hosts draw crowds through drawCharacters where it does not.
+    bool crowd = false;
     /// Bit (1 << TerrainMode) for each terrain mode the backend draws.
     uint32_t terrainModes = 1u << uint32_t(terrain::TerrainMode::LowRes);
     /// Empty when the backend can run on the device it was asked about;

@@ -20,6 +20,11 @@ struct FrameReport {
     uint64_t characterTriangles = 0;
     /// Triangles the backend submitted (before clipping), as it computes them.
     uint64_t trianglesSubmitted = 0;
+    /// Crowd instances drawn per LOD tier (near, middle, far; fading copies
+    /// included) and their triangles, as the GPU's lists counted them (a
+    /// backend reads its counters back when the frame completes).
+    uint32_t crowdInstances[3] = {0, 0, 0};
+    uint64_t crowdTriangles[3] = {0, 0, 0};
     uint32_t passes = 0;
     /// Bytes of the backend's intermediate buffers and render targets (cage,
     /// factors, records, commands, pattern library), for the backend comparison.

@@ -1,0 +1,158 @@
+#include "GpuCrowd.h"
+
+#include "tessera/backend/CrowdChecks.h"
+#include "tessera/character/BakedAnimation.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace tessera::backends {
+
+Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(
+    gpu::Device& device, const backend::CrowdDesc& desc,
+    const std::function<GpuCharacter*(backend::CharacterHandle)>& find) {
+    if (Status ok = backend::checkCrowdDesc(desc); !ok) return ok.error();
+    const character::BakedAnimation& baked = *desc.animation;
+    const uint32_t texelLimit = device.properties().limits.maxTexelBufferElements;
+    if (baked.texelCount() > texelLimit)
+        return Error{"createCrowd: the baked clips need " + std::to_string(baked.texelCount()) +
+                     " texels, more than this device's maxTexelBufferElements (" + std::to_string(texelLimit) + ")"};
+
+    std::unique_ptr<GpuCrowd> crowd(new GpuCrowd());
+    crowd->mMaxInstances = desc.maxInstances;
+    crowd->mMaxIds = desc.maxIds;
+    crowd->mNearSlots = std::max(desc.nearSlots, 1u);
+    crowd->mClipCount = uint32_t(baked.clips.size());
+
+    // Every creature's cage, then its far mesh, in one vertex and one index
+    // buffer: one binding serves every list's draw.
+    std::vector<shader::CharacterVertex> vertices;
+    std::vector<uint32_t> indices;
+    for (size_t i = 0; i < desc.characters.size(); ++i) {
+        const backend::CrowdCharacterDesc& c = desc.characters[i];
+        GpuCharacter* character = find(c.character);
+        if (!character)
+            return Error{"createCrowd: character " + std::to_string(i) + " (handle " + std::to_string(c.character.id) +
+                         ") does not exist"};
+        const uint32_t palette = character->paletteSize();
+        const uint32_t clipBase = baked.characterClipBase[i];
+        if (clipBase >= baked.clips.size() || baked.clips[clipBase].frames.z != palette)
+            return Error{"createCrowd: " + character->name() + " has " + std::to_string(palette) +
+                         " skinning matrices; its baked clips do not"};
+        auto far = GpuCharacter::convertVertices(*c.farMesh, palette, character->name() + " far mesh");
+        if (!far) return far.error();
+        for (uint32_t index : c.farMesh->indices)
+            if (index >= c.farMesh->vertices.size())
+                return Error{"createCrowd: " + character->name() + " far mesh: index " + std::to_string(index) +
+                             " out of range"};
+        Creature creature;
+        creature.character = character;
+        creature.cageFirstVertex = uint32_t(vertices.size());
+        creature.cageFirstIndex = uint32_t(indices.size());
+        creature.cageTriangles = character->triangleCount();
+        vertices.insert(vertices.end(), character->gpuVertices().begin(), character->gpuVertices().end());
+        indices.insert(indices.end(), character->cageIndices().begin(), character->cageIndices().end());
+        creature.farFirstVertex = uint32_t(vertices.size());
+        creature.farFirstIndex = uint32_t(indices.size());
+        creature.farTriangles = c.farMesh->triangleCount();
+        vertices.insert(vertices.end(), far.value().begin(), far.value().end());
+        indices.insert(indices.end(), c.farMesh->indices.begin(), c.farMesh->indices.end());
+        crowd->mCreatures.push_back(creature);
+        crowd->mLevelPerPixel.push_back(c.levelPerPixel);
+        crowd->mNearStride = std::max(crowd->mNearStride, character->vertexCount());
+    }
+
+    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    const VkBufferUsageFlags dst = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    const VkBufferUsageFlags src = VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    crowd->mVertices = gpu::Buffer(device, vertices.size() * sizeof(shader::CharacterVertex), storage,
+                                   gpu::MemoryUsage::GpuOnly, "crowd.vertices");
+    crowd->mVertices.upload(std::span<const shader::CharacterVertex>(vertices));
+    crowd->mIndices = gpu::Buffer(device, indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                  gpu::MemoryUsage::GpuOnly, "crowd.indices");
+    crowd->mIndices.upload(std::span<const uint32_t>(indices));
+    crowd->mBaked = gpu::Buffer(device, baked.rows.size() * sizeof(glm::vec4), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                                gpu::MemoryUsage::GpuOnly, "crowd.bakedMatrices");
+    crowd->mBaked.upload(std::span<const glm::vec4>(baked.rows));
+    crowd->mBakedView = gpu::BufferView(device, crowd->mBaked, VK_FORMAT_R32G32B32A32_SFLOAT, 0,
+                                        baked.rows.size() * sizeof(glm::vec4), "crowd.bakedMatrices.texels");
+    crowd->mClips = gpu::Buffer(device, baked.clips.size() * sizeof(shader::BakedClip), storage,
+                                gpu::MemoryUsage::GpuOnly, "crowd.clips");
+    crowd->mClips.upload(std::span<const shader::BakedClip>(baked.clips));
+    crowd->mState = gpu::Buffer(device, VkDeviceSize(desc.maxIds) * sizeof(uint32_t), storage | dst,
+                                gpu::MemoryUsage::GpuOnly, "crowd.lodState");
+    crowd->mLists = gpu::Buffer(device, VkDeviceSize(TS_CROWD_LISTS) * desc.maxInstances * sizeof(shader::CrowdListEntry),
+                                storage | src, gpu::MemoryUsage::GpuOnly, "crowd.tierLists");
+    crowd->mArgs = gpu::Buffer(device, TS_CROWD_ARG_WORDS * sizeof(uint32_t),
+                               storage | dst | src | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
+                               "crowd.indirect");
+    crowd->mNear = gpu::Buffer(device, VkDeviceSize(crowd->mNearSlots) * crowd->mNearStride * 16, storage,
+                               gpu::MemoryUsage::GpuOnly, "crowd.nearCages");
+    crowd->mNearOwners = gpu::Buffer(device, VkDeviceSize(crowd->mNearSlots) * sizeof(glm::uvec2), storage,
+                                     gpu::MemoryUsage::GpuOnly, "crowd.nearSlots");
+    for (uint32_t slot = 0; slot < gpu::kFramesInFlight; ++slot) {
+        const std::string tag = "[" + std::to_string(slot) + "]";
+        crowd->mInstances[slot] = gpu::Buffer(device, VkDeviceSize(desc.maxInstances) * sizeof(shader::CrowdInstance),
+                                              storage, gpu::MemoryUsage::CpuToGpu, "crowd.instances" + tag);
+        crowd->mArgsReadback[slot] = gpu::Buffer(device, TS_CROWD_ARG_WORDS * sizeof(uint32_t), dst,
+                                                 gpu::MemoryUsage::GpuToCpu, "crowd.indirectReadback" + tag);
+    }
+
+    // Each list draws its creature's mesh: the cage (near, middle) or the
+    // far mesh; firstInstance is the list's region, so gl_InstanceIndex is
+    // the entry. The near tier fetches compressed vertices by local index
+    // (vertexOffset 0); the others read the vertex buffer at vertexOffset.
+    std::vector<uint32_t>& args = crowd->mInitialArgs;
+    args.assign(TS_CROWD_ARG_WORDS, 0u);
+    for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier)
+        for (uint32_t c = 0; c < crowd->mCreatures.size(); ++c) {
+            const Creature& k = crowd->mCreatures[c];
+            uint32_t* cmd = &args[(tier * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS];
+            const bool far = tier == TS_LOD_FAR;
+            cmd[0] = 3 * (far ? k.farTriangles : k.cageTriangles);
+            cmd[1] = 0;
+            cmd[2] = far ? k.farFirstIndex : k.cageFirstIndex;
+            cmd[3] = tier == TS_LOD_NEAR ? 0 : (far ? k.farFirstVertex : k.cageFirstVertex);
+            cmd[4] = shader::tsCrowdListBase(tier, c, desc.maxInstances);
+        }
+    args[TS_CROWD_ARG_DISPATCH + 1] = 1;
+    args[TS_CROWD_ARG_DISPATCH + 2] = 1;
+    return crowd;
+}
+
+uint32_t GpuCrowd::uploadInstances(uint32_t slot, std::span<const shader::CrowdInstance> instances) {
+    auto* out = static_cast<shader::CrowdInstance*>(mInstances[slot].mapped());
+    uint32_t count = 0;
+    for (const shader::CrowdInstance& instance : instances) {
+        if (count == mMaxInstances) break;
+        if (backend::crowdInstanceValid(instance, mMaxIds, uint32_t(mCreatures.size()), mClipCount))
+            out[count++] = instance;
+    }
+    return count;
+}
+
+shader::CrowdUniforms GpuCrowd::uniforms(const backend::CrowdDrawInfo& draw, uint32_t instanceCount) const {
+    shader::CrowdUniforms u{};
+    u.lod = draw.lod;
+    for (size_t c = 0; c < mCreatures.size(); ++c) {
+        const GpuCharacter& k = *mCreatures[c].character;
+        shader::CrowdCharacter& out = u.characters[c];
+        out.boxMin = glm::vec4(k.boxMin(), mLevelPerPixel[c]);
+        out.boxMax = glm::vec4(k.boxMax(), k.negativeHandedness() ? 1.0f : 0.0f);
+        out.uvRange = k.uvRange();
+        out.displacement = glm::vec4(k.displacementScale(), k.displacementBias(), 1.0f, 0.0f);
+        out.mesh = glm::uvec4(mCreatures[c].cageFirstVertex, k.vertexCount(), mCreatures[c].farFirstVertex, 0u);
+    }
+    u.counts = glm::uvec4(instanceCount, uint32_t(mCreatures.size()), mNearSlots, mMaxInstances);
+    u.flags = glm::uvec4(draw.displacement ? 1u : 0u, draw.lodColors ? 1u : 0u, mNearStride, mMaxIds);
+    return u;
+}
+
+uint64_t GpuCrowd::bytes() const {
+    uint64_t total = mVertices.size() + mIndices.size() + mBaked.size() + mClips.size() + mState.size() +
+                     mLists.size() + mArgs.size() + mNear.size() + mNearOwners.size();
+    for (const gpu::Buffer& b : mInstances) total += b.size();
+    return total;
+}
+
+} // namespace tessera::backends

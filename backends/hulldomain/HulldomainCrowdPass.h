@@ -1,0 +1,44 @@
+#pragma once
+/// @file HulldomainCrowdPass.h
+/// hulldomain's instanced crowd (D3D11 style, compute): a compute pass culls
+/// the instances and bins them into the tier lists, whose counts are the
+/// indirect draws' instance counts; a second compute pass, dispatched
+/// indirectly, skins the near tier's cages into compressed vertices; then
+/// per creature an indirect tessellated draw (near), an indirect draw of the
+/// cage (middle) and of the far mesh (far), skinned from the baked clips.
+
+#include "CrowdDescriptors.h"
+#include "GpuCrowd.h"
+#include "tessera/gpu/ComputePipeline.h"
+#include "tessera/gpu/FrameContext.h"
+#include "tessera/gpu/Pipeline.h"
+#include "tessera/gpu/PipelineLayout.h"
+
+namespace tessera::backends {
+
+class HulldomainCrowdPass {
+public:
+    HulldomainCrowdPass() = default;
+    HulldomainCrowdPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat);
+
+    /// Outside the main pass: resets the indirect commands, culls and bins
+    /// (GPU pass crowd.cull), skins the near slots (crowd.skin), and copies
+    /// the commands for the frame report.
+    void recordCompute(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
+                       uint32_t instanceCount);
+    /// Inside the main pass: each tier's draws (crowd.near, crowd.middle, crowd.far).
+    void recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors);
+
+private:
+    void push(VkCommandBuffer cmd, VkPipelineBindPoint point, std::span<const VkWriteDescriptorSet> writes);
+
+    gpu::Device* mDevice = nullptr;
+    gpu::PipelineLayout mComputeLayout;
+    gpu::PipelineLayout mLayout;
+    gpu::ComputePipeline mCull;
+    gpu::ComputePipeline mSkin;
+    gpu::Pipeline mNear;
+    gpu::Pipeline mMesh;
+};
+
+} // namespace tessera::backends

@@ -1,0 +1,47 @@
+#include "NullCrowd.h"
+
+#include "tessera/backend/CrowdChecks.h"
+#include "tessera/tessellator/ContinuousLevel.h"
+#include "tessera/tessellator/Tessellator.h"
+
+namespace tessera::backends {
+
+NullCrowd::NullCrowd(std::vector<Creature> creatures, uint32_t clips, uint32_t maxInstances, uint32_t maxIds)
+    : mCreatures(std::move(creatures)), mClips(clips), mMaxInstances(maxInstances),
+      mState(maxIds, shader::tsLodStateNone()) {}
+
+backend::CrowdTierCounts NullCrowd::draw(const backend::CrowdDrawInfo& draw) {
+    backend::CrowdTierCounts counts;
+    for (auto& list : mTiers.instances) list.clear();
+    const shader::CrowdLodParams& p = draw.lod;
+    const size_t n = std::min<size_t>(draw.instances.size(), mMaxInstances);
+    for (uint32_t i = 0; i < n; ++i) {
+        const shader::CrowdInstance& instance = draw.instances[i];
+        if (!backend::crowdInstanceValid(instance, uint32_t(mState.size()), uint32_t(mCreatures.size()), mClips))
+            continue;
+        uint32_t& state = mState[instance.ids.x];
+        state = shader::tsLodUpdate(state, instance.sphere, p);
+        const uint32_t tier = shader::tsLodStateTier(state);
+        if (tier == TS_LOD_NONE) continue;
+        const Creature& creature = mCreatures[instance.ids.y];
+        auto add = [&](uint32_t t) {
+            mTiers.instances[t].push_back(i);
+            ++counts.instances[t];
+            if (t == TS_LOD_NEAR) {
+                const float level =
+                    shader::tsLodLevel(shader::tsLodPixels(instance.sphere, p), creature.levelPerPixel, p);
+                counts.triangles[t] += uint64_t(creature.cageTriangles) *
+                                       tessellator::Tessellator::countTriangles(
+                                           tessellator::Domain::Triangle, tessellator::Partitioning::FractionalOdd,
+                                           tessellator::ContinuousLevel::factors(level));
+            } else {
+                counts.triangles[t] += t == TS_LOD_MIDDLE ? creature.cageTriangles : creature.farTriangles;
+            }
+        };
+        add(tier);
+        if (shader::tsLodStateFade(state) > 0u) add(shader::tsLodStatePrevious(state));
+    }
+    return counts;
+}
+
+} // namespace tessera::backends

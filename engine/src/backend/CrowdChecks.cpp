@@ -1,0 +1,42 @@
+#include "tessera/backend/CrowdChecks.h"
+
+#include "tessera/character/BakedAnimation.h"
+#include "tessera/character/CageMesh.h"
+
+#include <cmath>
+#include <string>
+
+namespace tessera::backend {
+
+Status checkCrowdDesc(const CrowdDesc& desc) {
+    auto bad = [](const std::string& what) { return Error{"createCrowd: " + what}; };
+    if (desc.characters.empty()) return bad("a crowd needs at least one character");
+    if (desc.characters.size() > TS_CROWD_MAX_CHARACTERS)
+        return bad(std::to_string(desc.characters.size()) + " characters; a crowd mixes at most " +
+                   std::to_string(TS_CROWD_MAX_CHARACTERS));
+    if (!desc.animation) return bad("no baked animation (character::bakeAnimation, combine)");
+    if (desc.animation->characterClipBase.size() != desc.characters.size())
+        return bad("the baked animation has " + std::to_string(desc.animation->characterClipBase.size()) +
+                   " characters, the crowd " + std::to_string(desc.characters.size()));
+    for (size_t i = 0; i < desc.characters.size(); ++i) {
+        const CrowdCharacterDesc& c = desc.characters[i];
+        const std::string name = "character " + std::to_string(i);
+        if (!c.character.valid()) return bad(name + " has no character handle");
+        if (!c.farMesh || c.farMesh->triangleCount() == 0) return bad(name + " has no far mesh");
+        if (!(c.levelPerPixel > 0.0f) || !std::isfinite(c.levelPerPixel))
+            return bad(name + ": levels per pixel must be a positive number");
+    }
+    if (desc.maxInstances == 0) return bad("maxInstances is 0");
+    if (desc.maxIds < desc.maxInstances) return bad("maxIds is below maxInstances");
+    return {};
+}
+
+bool crowdInstanceValid(const shader::CrowdInstance& instance, uint32_t maxIds, uint32_t characters, uint32_t clips) {
+    const bool finite = std::isfinite(instance.sphere.x) && std::isfinite(instance.sphere.y) &&
+                        std::isfinite(instance.sphere.z) && std::isfinite(instance.sphere.w) &&
+                        std::isfinite(instance.animation.x) && std::isfinite(instance.animation.y);
+    return finite && instance.sphere.w >= 0.0f && instance.ids.x < maxIds && instance.ids.y < characters &&
+           instance.ids.z < clips;
+}
+
+} // namespace tessera::backend
