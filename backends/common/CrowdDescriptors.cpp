@@ -9,40 +9,66 @@ namespace {
 
 constexpr VkDescriptorType kUniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
 constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+constexpr VkDescriptorType kTexel = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
 
-// Binding and type of each buffer write, in CrowdDescriptors::mBuffers' order.
-constexpr std::pair<uint32_t, VkDescriptorType> kBufferBindings[] = {
+// Buffer bindings of each mode, in the order the constructor fills them.
+constexpr std::pair<uint32_t, VkDescriptorType> kStorageBuffers[] = {
     {TS_BINDING_FRAME, kUniform},          {TS_BINDING_CROWD, kUniform},
     {TS_BINDING_CROWD_INSTANCES, kStorage}, {TS_BINDING_CROWD_LISTS, kStorage},
     {TS_BINDING_CROWD_CLIPS, kStorage},    {TS_BINDING_CROWD_VERTICES, kStorage},
     {TS_BINDING_CROWD_STATE, kStorage},    {TS_BINDING_CROWD_ARGS, kStorage},
     {TS_BINDING_CROWD_NEAR, kStorage},     {TS_BINDING_CROWD_SLOTS, kStorage}};
+constexpr uint32_t kStorageTexels[] = {TS_BINDING_CROWD_BAKED};
+constexpr std::pair<uint32_t, VkDescriptorType> kTexelBuffers[] = {{TS_BINDING_FRAME, kUniform},
+                                                                   {TS_BINDING_CROWD, kUniform}};
+constexpr uint32_t kTexelTexels[] = {TS_BINDING_CROWD_BAKED, TS_BINDING_CROWD_INSTANCES, TS_BINDING_CROWD_CLIPS,
+                                     TS_BINDING_CROWD_NEAR,  TS_BINDING_CROWD_SLOTS,     TS_BINDING_CROWD_INDICES};
 constexpr uint32_t kImageBindings[] = {TS_BINDING_BASE_COLOR, TS_BINDING_NORMAL_MAP, TS_BINDING_DISPLACEMENT};
+
+std::span<const std::pair<uint32_t, VkDescriptorType>> buffersOf(CrowdDescriptors::Mode mode) {
+    if (mode == CrowdDescriptors::Mode::Storage) return kStorageBuffers;
+    return kTexelBuffers;
+}
+
+std::span<const uint32_t> texelsOf(CrowdDescriptors::Mode mode) {
+    if (mode == CrowdDescriptors::Mode::Storage) return kStorageTexels;
+    return kTexelTexels;
+}
 
 } // namespace
 
-gpu::PipelineLayout CrowdDescriptors::layout(gpu::Device& device, VkShaderStageFlags stages, std::string name) {
+gpu::PipelineLayout CrowdDescriptors::layout(gpu::Device& device, Mode mode, VkShaderStageFlags stages,
+                                             std::string name) {
     std::vector<gpu::BindingDesc> bindings;
-    for (const auto& [binding, type] : kBufferBindings) bindings.push_back({binding, type, stages});
-    bindings.push_back({TS_BINDING_CROWD_BAKED, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, stages});
+    for (const auto& [binding, type] : buffersOf(mode)) bindings.push_back({binding, type, stages});
+    for (uint32_t binding : texelsOf(mode)) bindings.push_back({binding, kTexel, stages});
     for (uint32_t binding : kImageBindings)
         bindings.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages});
     return gpu::PipelineLayout(device, bindings, 0, 0, std::move(name));
 }
 
-CrowdDescriptors::CrowdDescriptors(GpuCrowd& crowd, uint32_t slot, const gpu::UniformSlice& frame,
+CrowdDescriptors::CrowdDescriptors(Mode mode, GpuCrowd& crowd, uint32_t slot, const gpu::UniformSlice& frame,
                                    const gpu::UniformSlice& uniforms)
     : mCrowd(crowd) {
     auto whole = [](gpu::Buffer& b) { return VkDescriptorBufferInfo{b.handle(), 0, VK_WHOLE_SIZE}; };
-    mBuffers = {frame.descriptor(),         uniforms.descriptor(),     whole(crowd.instances(slot)),
-                whole(crowd.lists()),        whole(crowd.clips()),      whole(crowd.vertices()),
-                whole(crowd.state()),        whole(crowd.args()),       whole(crowd.nearCages()),
-                whole(crowd.nearOwners())};
-    mBaked = crowd.bakedView();
-    for (size_t i = 0; i < kBuffers; ++i)
-        mWrites[i] = bufferWrite(kBufferBindings[i].first, kBufferBindings[i].second, &mBuffers[i]);
-    mWrites[kBuffers] = texelWrite(TS_BINDING_CROWD_BAKED, &mBaked);
-    for (size_t i = 0; i < kImages; ++i) mWrites[kBuffers + 1 + i] = imageWrite(kImageBindings[i], &mImages[i]);
+    if (mode == Mode::Storage) {
+        mBuffers = {frame.descriptor(),  uniforms.descriptor(), whole(crowd.instances(slot)), whole(crowd.lists()),
+                    whole(crowd.clips()), whole(crowd.vertices()), whole(crowd.state()),        whole(crowd.args()),
+                    whole(crowd.nearCages()), whole(crowd.nearOwners())};
+        mTexels[0] = crowd.bakedView();
+    } else {
+        mBuffers[0] = frame.descriptor();
+        mBuffers[1] = uniforms.descriptor();
+        mTexels = {crowd.bakedView(),     crowd.instancesView(slot), crowd.clipsView(),
+                   crowd.nearCagesView(), crowd.nearSlotsView(),     crowd.indicesView()};
+    }
+    const auto buffers = buffersOf(mode);
+    const auto texels = texelsOf(mode);
+    for (size_t i = 0; i < buffers.size(); ++i)
+        mWrites.push_back(bufferWrite(buffers[i].first, buffers[i].second, &mBuffers[i]));
+    for (size_t i = 0; i < texels.size(); ++i) mWrites.push_back(texelWrite(texels[i], &mTexels[i]));
+    mFirstImage = mWrites.size();
+    for (size_t i = 0; i < kImages; ++i) mWrites.push_back(imageWrite(kImageBindings[i], &mImages[i]));
 }
 
 std::span<const VkWriteDescriptorSet> CrowdDescriptors::writes(uint32_t creature) {

@@ -1,9 +1,12 @@
 #pragma once
 /// @file CrowdDescriptors.h
-/// The push-descriptor writes of an instanced crowd pass (the bindings of
-/// CrowdInstance.h plus the frame's and a creature's maps) and the one
-/// pipeline layout every crowd pipeline of a backend shares, so compute and
-/// draws bind alike.
+/// The push-descriptor writes of an instanced crowd's draws (the bindings of
+/// CrowdInstance.h plus the frame's and a creature's maps) and the pipeline
+/// layout that matches them. Two sets: `Storage` (hulldomain: instances,
+/// lists, clips, state, commands and near slots as storage buffers, for its
+/// compute passes and draws) and `Texels` (the emulated backends' draws:
+/// instances, clips, near cages, near slot records and indices as texel
+/// buffers, as D3D9 vertex texture fetch and D3D10 Buffer.Load read them).
 
 #include "GpuCrowd.h"
 #include "tessera/gpu/FrameContext.h"
@@ -12,16 +15,20 @@
 #include <array>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace tessera::backends {
 
 class CrowdDescriptors {
 public:
-    /// The layout: every crowd binding, visible to `stages`.
-    static gpu::PipelineLayout layout(gpu::Device& device, VkShaderStageFlags stages, std::string name);
+    enum class Mode { Storage, Texels };
+
+    /// The layout of `mode`'s bindings, visible to `stages`.
+    static gpu::PipelineLayout layout(gpu::Device& device, Mode mode, VkShaderStageFlags stages, std::string name);
 
     /// Writes for `crowd` in frame slot `slot` with this frame's uniforms.
-    CrowdDescriptors(GpuCrowd& crowd, uint32_t slot, const gpu::UniformSlice& frame, const gpu::UniformSlice& uniforms);
+    CrowdDescriptors(Mode mode, GpuCrowd& crowd, uint32_t slot, const gpu::UniformSlice& frame,
+                     const gpu::UniformSlice& uniforms);
     CrowdDescriptors(const CrowdDescriptors&) = delete;
     CrowdDescriptors& operator=(const CrowdDescriptors&) = delete;
 
@@ -29,13 +36,15 @@ public:
     std::span<const VkWriteDescriptorSet> writes(uint32_t creature);
 
 private:
-    static constexpr size_t kBuffers = 10;
+    static constexpr size_t kMaxBuffers = 10;
+    static constexpr size_t kMaxTexels = 6;
     static constexpr size_t kImages = 3;
     GpuCrowd& mCrowd;
-    std::array<VkDescriptorBufferInfo, kBuffers> mBuffers{};
+    std::array<VkDescriptorBufferInfo, kMaxBuffers> mBuffers{};
+    std::array<VkBufferView, kMaxTexels> mTexels{};
     std::array<VkDescriptorImageInfo, kImages> mImages{};
-    VkBufferView mBaked = VK_NULL_HANDLE;
-    std::array<VkWriteDescriptorSet, kBuffers + kImages + 1> mWrites{};
+    std::vector<VkWriteDescriptorSet> mWrites;
+    size_t mFirstImage = 0;
 };
 
 } // namespace tessera::backends

@@ -2,6 +2,7 @@
 
 #include "tessera/backend/CrowdChecks.h"
 #include "tessera/character/BakedAnimation.h"
+#include "tessera/tessellator/TrianglePatternLibrary.h"
 
 #include <algorithm>
 #include <cstring>
@@ -10,7 +11,7 @@ namespace tessera::backends {
 
 Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(
     gpu::Device& device, const backend::CrowdDesc& desc,
-    const std::function<GpuCharacter*(backend::CharacterHandle)>& find) {
+    const std::function<GpuCharacter*(backend::CharacterHandle)>& find, VkBufferUsageFlags writeUsage) {
     if (Status ok = backend::checkCrowdDesc(desc); !ok) return ok.error();
     const character::BakedAnimation& baked = *desc.animation;
     const uint32_t texelLimit = device.properties().limits.maxTexelBufferElements;
@@ -60,40 +61,70 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(
         crowd->mCreatures.push_back(creature);
         crowd->mLevelPerPixel.push_back(c.levelPerPixel);
         crowd->mNearStride = std::max(crowd->mNearStride, character->vertexCount());
+        crowd->mTriangleStride = std::max(crowd->mTriangleStride, creature.cageTriangles);
     }
 
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    const VkBufferUsageFlags texels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
     const VkBufferUsageFlags dst = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     const VkBufferUsageFlags src = VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-    crowd->mVertices = gpu::Buffer(device, vertices.size() * sizeof(shader::CharacterVertex), storage,
+    const VkBufferUsageFlags vertex = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
+    const VkBufferUsageFlags written = writeUsage | dst | src;
+    auto whole = [](const gpu::Buffer& b) { return b.size(); };
+    crowd->mVertices = gpu::Buffer(device, vertices.size() * sizeof(shader::CharacterVertex), storage | vertex,
                                    gpu::MemoryUsage::GpuOnly, "crowd.vertices");
     crowd->mVertices.upload(std::span<const shader::CharacterVertex>(vertices));
-    crowd->mIndices = gpu::Buffer(device, indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+    crowd->mIndices = gpu::Buffer(device, indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | texels,
                                   gpu::MemoryUsage::GpuOnly, "crowd.indices");
     crowd->mIndices.upload(std::span<const uint32_t>(indices));
-    crowd->mBaked = gpu::Buffer(device, baked.rows.size() * sizeof(glm::vec4), VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
-                                gpu::MemoryUsage::GpuOnly, "crowd.bakedMatrices");
+    crowd->mIndicesView = gpu::BufferView(device, crowd->mIndices, VK_FORMAT_R32_UINT, 0, whole(crowd->mIndices),
+                                          "crowd.indices.texels");
+    crowd->mBaked = gpu::Buffer(device, baked.rows.size() * sizeof(glm::vec4), texels, gpu::MemoryUsage::GpuOnly,
+                                "crowd.bakedMatrices");
     crowd->mBaked.upload(std::span<const glm::vec4>(baked.rows));
     crowd->mBakedView = gpu::BufferView(device, crowd->mBaked, VK_FORMAT_R32G32B32A32_SFLOAT, 0,
                                         baked.rows.size() * sizeof(glm::vec4), "crowd.bakedMatrices.texels");
-    crowd->mClips = gpu::Buffer(device, baked.clips.size() * sizeof(shader::BakedClip), storage,
+    crowd->mClips = gpu::Buffer(device, baked.clips.size() * sizeof(shader::BakedClip), storage | texels,
                                 gpu::MemoryUsage::GpuOnly, "crowd.clips");
     crowd->mClips.upload(std::span<const shader::BakedClip>(baked.clips));
+    crowd->mClipsView = gpu::BufferView(device, crowd->mClips, VK_FORMAT_R32G32B32A32_UINT, 0, whole(crowd->mClips),
+                                        "crowd.clips.texels");
     crowd->mState = gpu::Buffer(device, VkDeviceSize(desc.maxIds) * sizeof(uint32_t), storage | dst,
                                 gpu::MemoryUsage::GpuOnly, "crowd.lodState");
     crowd->mLists = gpu::Buffer(device, VkDeviceSize(TS_CROWD_LISTS) * desc.maxInstances * sizeof(shader::CrowdListEntry),
-                                storage | src, gpu::MemoryUsage::GpuOnly, "crowd.tierLists");
+                                written | vertex, gpu::MemoryUsage::GpuOnly, "crowd.tierLists");
     crowd->mArgs = gpu::Buffer(device, TS_CROWD_ARG_WORDS * sizeof(uint32_t),
-                               storage | dst | src | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
+                               written | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
                                "crowd.indirect");
-    crowd->mNear = gpu::Buffer(device, VkDeviceSize(crowd->mNearSlots) * crowd->mNearStride * 16, storage,
+    crowd->mNear = gpu::Buffer(device, VkDeviceSize(crowd->mNearSlots) * crowd->mNearStride * 16, written | texels,
                                gpu::MemoryUsage::GpuOnly, "crowd.nearCages");
+    crowd->mNearView = gpu::BufferView(device, crowd->mNear, VK_FORMAT_R32G32B32A32_UINT, 0, whole(crowd->mNear),
+                                       "crowd.nearCages.texels");
     crowd->mNearOwners = gpu::Buffer(device, VkDeviceSize(crowd->mNearSlots) * sizeof(glm::uvec2), storage,
                                      gpu::MemoryUsage::GpuOnly, "crowd.nearSlots");
+    crowd->mNearSlotRecords = gpu::Buffer(device, VkDeviceSize(crowd->mNearSlots) * sizeof(shader::CrowdNearSlot),
+                                          written | texels, gpu::MemoryUsage::GpuOnly, "crowd.nearSlotRecords");
+    crowd->mNearSlotsView = gpu::BufferView(device, crowd->mNearSlotRecords, VK_FORMAT_R32G32B32A32_UINT, 0,
+                                            whole(crowd->mNearSlotRecords), "crowd.nearSlotRecords.texels");
+    crowd->mNearCommands =
+        gpu::Buffer(device,
+                    VkDeviceSize(crowd->mCreatures.size()) * crowd->mNearSlots * TS_CROWD_NEAR_COMMAND_WORDS *
+                        sizeof(uint32_t),
+                    written | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly, "crowd.nearCommands");
+    const tessellator::TrianglePatternLibrary& patterns = tessellator::TrianglePatternLibrary::fractionalOdd();
+    crowd->mPatternCodes = gpu::Buffer(device, patterns.codes().size_bytes(), vertex, gpu::MemoryUsage::GpuOnly,
+                                       "crowd.nearPatternCodes");
+    crowd->mPatternCodes.upload(patterns.codes());
+    crowd->mPatternIndices = gpu::Buffer(device, patterns.indices().size_bytes(), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                         gpu::MemoryUsage::GpuOnly, "crowd.nearPatternIndices");
+    crowd->mPatternIndices.upload(patterns.indices());
     for (uint32_t slot = 0; slot < gpu::kFramesInFlight; ++slot) {
         const std::string tag = "[" + std::to_string(slot) + "]";
         crowd->mInstances[slot] = gpu::Buffer(device, VkDeviceSize(desc.maxInstances) * sizeof(shader::CrowdInstance),
-                                              storage, gpu::MemoryUsage::CpuToGpu, "crowd.instances" + tag);
+                                              storage | texels, gpu::MemoryUsage::CpuToGpu, "crowd.instances" + tag);
+        crowd->mInstancesView[slot] =
+            gpu::BufferView(device, crowd->mInstances[slot], VK_FORMAT_R32G32B32A32_UINT, 0,
+                            whole(crowd->mInstances[slot]), "crowd.instances.texels" + tag);
         crowd->mArgsReadback[slot] = gpu::Buffer(device, TS_CROWD_ARG_WORDS * sizeof(uint32_t), dst,
                                                  gpu::MemoryUsage::GpuToCpu, "crowd.indirectReadback" + tag);
     }
@@ -121,14 +152,38 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(
 }
 
 uint32_t GpuCrowd::uploadInstances(uint32_t slot, std::span<const shader::CrowdInstance> instances) {
+    // A counting sort by creature: the emulated techniques cull and rank
+    // each creature's instances as one contiguous range.
+    mLastSlot = slot;
+    const uint32_t creatures = uint32_t(mCreatures.size());
+    std::vector<glm::uvec2>& ranges = mRanges[slot];
+    ranges.assign(creatures, glm::uvec2(0));
+    std::vector<uint32_t> valid;
+    valid.reserve(std::min<size_t>(instances.size(), mMaxInstances));
+    for (uint32_t i = 0; i < instances.size() && valid.size() < mMaxInstances; ++i)
+        if (backend::crowdInstanceValid(instances[i], mMaxIds, creatures, mClipCount)) {
+            valid.push_back(i);
+            ++ranges[instances[i].ids.y].y;
+        }
+    for (uint32_t c = 1; c < creatures; ++c) ranges[c].x = ranges[c - 1].x + ranges[c - 1].y;
+    std::vector<uint32_t> next(creatures);
+    for (uint32_t c = 0; c < creatures; ++c) next[c] = ranges[c].x;
     auto* out = static_cast<shader::CrowdInstance*>(mInstances[slot].mapped());
-    uint32_t count = 0;
-    for (const shader::CrowdInstance& instance : instances) {
-        if (count == mMaxInstances) break;
-        if (backend::crowdInstanceValid(instance, mMaxIds, uint32_t(mCreatures.size()), mClipCount))
-            out[count++] = instance;
+    std::vector<uint32_t>& host = mHostIndex[slot];
+    host.resize(valid.size());
+    for (uint32_t i : valid) {
+        const uint32_t at = next[instances[i].ids.y]++;
+        out[at] = instances[i];
+        host[at] = i;
     }
-    return count;
+    return uint32_t(valid.size());
+}
+
+backend::CrowdTiers GpuCrowd::toHostIndices(backend::CrowdTiers tiers) const {
+    const std::vector<uint32_t>& host = mHostIndex[mLastSlot];
+    for (auto& list : tiers.instances)
+        for (uint32_t& i : list) i = i < host.size() ? host[i] : UINT32_MAX;
+    return tiers;
 }
 
 shader::CrowdUniforms GpuCrowd::uniforms(const backend::CrowdDrawInfo& draw, uint32_t instanceCount) const {
@@ -141,8 +196,14 @@ shader::CrowdUniforms GpuCrowd::uniforms(const backend::CrowdDrawInfo& draw, uin
         out.boxMax = glm::vec4(k.boxMax(), k.negativeHandedness() ? 1.0f : 0.0f);
         out.uvRange = k.uvRange();
         out.displacement = glm::vec4(k.displacementScale(), k.displacementBias(), 1.0f, 0.0f);
-        out.mesh = glm::uvec4(mCreatures[c].cageFirstVertex, k.vertexCount(), mCreatures[c].farFirstVertex, 0u);
+        const Creature& m = mCreatures[c];
+        out.mesh = glm::uvec4(m.cageFirstVertex, k.vertexCount(), m.farFirstVertex, 0u);
+        out.indices = glm::uvec4(m.cageFirstIndex, m.cageTriangles, m.farFirstIndex, m.farTriangles);
     }
+    const auto classes = tessellator::TrianglePatternLibrary::fractionalOdd().classes();
+    for (size_t k = 0; k < classes.size() && k < TS_EMU_TRIANGLE_CLASSES; ++k)
+        u.nearPatterns[k] = glm::uvec4(classes[k].firstIndex, classes[k].indexCount, classes[k].firstCode, 0u);
+    u.emulated = glm::uvec4(mTriangleStride, 0u, 0u, 0u);
     u.counts = glm::uvec4(instanceCount, uint32_t(mCreatures.size()), mNearSlots, mMaxInstances);
     u.flags = glm::uvec4(draw.displacement ? 1u : 0u, draw.lodColors ? 1u : 0u, mNearStride, mMaxIds);
     return u;
@@ -150,7 +211,8 @@ shader::CrowdUniforms GpuCrowd::uniforms(const backend::CrowdDrawInfo& draw, uin
 
 uint64_t GpuCrowd::bytes() const {
     uint64_t total = mVertices.size() + mIndices.size() + mBaked.size() + mClips.size() + mState.size() +
-                     mLists.size() + mArgs.size() + mNear.size() + mNearOwners.size();
+                     mLists.size() + mArgs.size() + mNear.size() + mNearOwners.size() + mNearSlotRecords.size() +
+                     mNearCommands.size() + mPatternCodes.size() + mPatternIndices.size();
     for (const gpu::Buffer& b : mInstances) total += b.size();
     return total;
 }

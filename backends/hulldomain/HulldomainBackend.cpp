@@ -5,13 +5,11 @@
 #include "CharacterPatchPass.h"
 #include "CharacterSkinPass.h"
 #include "FrameUniforms.h"
+#include "GpuCrowdSet.h"
 #include "HulldomainCrowdPass.h"
 #include "TessFactorPass.h"
 #include "tessera/backend/PluginApi.h"
 
-#include <cstring>
-#include <memory>
-#include <vector>
 
 #include "terrain_basic.frag.spv.h"
 #include "terrain_patch.tesc.spv.h"
@@ -42,6 +40,7 @@ protected:
         mCharacterSkin = CharacterSkinPass(*mDevice);
         mCharacterPatches = CharacterPatchPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
                                                static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
+        mCrowds = GpuCrowdSet(*mDevice);
         mCrowdPass = HulldomainCrowdPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
                                          static_cast<VkFormat>(info.depthFormat));
         const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
@@ -90,30 +89,23 @@ protected:
 
 public:
     Result<backend::CrowdHandle> createCrowd(const backend::CrowdDesc& desc) override {
-        if (!mDevice) return fail("createCrowd before initialize");
-        auto created = GpuCrowd::create(*mDevice, desc, [this](backend::CharacterHandle h) { return findCharacter(h); });
-        if (!created) return created.error();
-        mCrowds.push_back(std::move(created.value()));
-        return backend::CrowdHandle{static_cast<uint32_t>(mCrowds.size() - 1)};
+        return mCrowds.create(
+            desc, [this](backend::CharacterHandle h) { return findCharacter(h); }, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     }
 
-    void destroyCrowd(backend::CrowdHandle handle) override {
-        GpuCrowd* crowd = findCrowd(handle);
-        if (!crowd) return;
-        auto* released = mCrowds[handle.id].release();
-        mDevice->deferDestroy([released] { delete released; });
-    }
+    void destroyCrowd(backend::CrowdHandle handle) override { mCrowds.destroy(handle); }
 
     void drawCrowd(backend::CrowdHandle handle, const backend::CrowdDrawInfo& draw) override {
-        GpuCrowd* crowd = findCrowd(handle);
+        GpuCrowd* crowd = mCrowds.find(handle);
         if (!crowd) return;
         const uint32_t slot = mFrame->slot();
-        reportCrowdCounts(*crowd, slot);
+        GpuCrowdSet::reportCounts(*crowd, slot, mReport);
         const uint32_t count = crowd->uploadInstances(slot, draw.instances);
         const gpu::UniformSlice uniforms = mFrame->pushUniform(crowd->uniforms(draw, count));
-        CrowdDescriptors descriptors(*crowd, slot, mFrameUniforms, uniforms);
+        CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, *crowd, slot, mFrameUniforms, uniforms);
         suspendMainPass();
         mCrowdPass.recordCompute(*mFrame, *crowd, descriptors, count);
+        GpuCrowdSet::recordCountsCopy(mFrame->cmd(), *crowd, slot);
         ensureMainPass();
         mCrowdPass.recordDraws(*mFrame, *crowd, descriptors);
         mReport.passes += 2 + TS_LOD_TIERS;
@@ -121,34 +113,7 @@ public:
     }
 
     Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle handle) override {
-        GpuCrowd* crowd = findCrowd(handle);
-        if (!crowd) return fail("readCrowdTiers: no such crowd");
-        mDevice->waitIdle();
-        const VkDeviceSize listBytes = crowd->lists().size();
-        const VkDeviceSize argBytes = TS_CROWD_ARG_WORDS * sizeof(uint32_t);
-        gpu::Buffer readback(*mDevice, listBytes + argBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                             gpu::MemoryUsage::GpuToCpu, "crowd.tierReadback");
-        mDevice->submitImmediate(
-            [&](VkCommandBuffer cmd) {
-                const VkBufferCopy lists{0, 0, listBytes};
-                const VkBufferCopy args{0, listBytes, argBytes};
-                vkCmdCopyBuffer(cmd, crowd->lists().handle(), readback.handle(), 1, &lists);
-                vkCmdCopyBuffer(cmd, crowd->args().handle(), readback.handle(), 1, &args);
-            },
-            "crowd.readTiers");
-        const auto* bytes = static_cast<const uint8_t*>(readback.mapped());
-        std::vector<uint32_t> argWords(TS_CROWD_ARG_WORDS);
-        std::memcpy(argWords.data(), bytes + listBytes, argBytes);
-        const auto* entries = reinterpret_cast<const shader::CrowdListEntry*>(bytes);
-        backend::CrowdTiers tiers;
-        for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier)
-            for (uint32_t c = 0; c < crowd->creatures().size(); ++c) {
-                const uint32_t list = tier * TS_CROWD_MAX_CHARACTERS + c;
-                const uint32_t n = std::min(argWords[list * TS_CROWD_ARG_DRAW_WORDS + 1], crowd->maxInstances());
-                const uint32_t base = shader::tsCrowdListBase(tier, c, crowd->maxInstances());
-                for (uint32_t k = 0; k < n; ++k) tiers.instances[tier].push_back(entries[base + k].instance);
-            }
-        return tiers;
+        return mCrowds.readTiers(handle);
     }
 
 protected:
@@ -211,27 +176,9 @@ protected:
     }
 
 private:
-    GpuCrowd* findCrowd(backend::CrowdHandle handle) {
-        return handle.valid() && handle.id < mCrowds.size() ? mCrowds[handle.id].get() : nullptr;
-    }
-
-    // The tier counts the GPU wrote the last time this frame slot drew the
-    // crowd (its fence has been waited for): FrameReport's crowd figures.
-    void reportCrowdCounts(GpuCrowd& crowd, uint32_t slot) {
-        if (!crowd.argsWritten(slot)) return;
-        const auto* words = static_cast<const uint32_t*>(crowd.argsReadback(slot).mapped());
-        for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier)
-            for (uint32_t c = 0; c < crowd.creatures().size(); ++c) {
-                const uint32_t n = words[(tier * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS + 1];
-                const GpuCrowd::Creature& k = crowd.creatures()[c];
-                mReport.crowdInstances[tier] += n;
-                mReport.crowdTriangles[tier] += uint64_t(n) * (tier == TS_LOD_FAR ? k.farTriangles : k.cageTriangles);
-            }
-    }
-
     TessFactorPass mFactorPass;
     HulldomainCrowdPass mCrowdPass;
-    std::vector<std::unique_ptr<GpuCrowd>> mCrowds;
+    GpuCrowdSet mCrowds;
     CharacterSkinPass mCharacterSkin;
     CharacterPatchPass mCharacterPatches;
     gpu::PipelineLayout mLayout;

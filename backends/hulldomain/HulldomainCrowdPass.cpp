@@ -27,8 +27,10 @@ HulldomainCrowdPass::HulldomainCrowdPass(gpu::Device& device, VkFormat colorForm
     // One layout per bind point: lavapipe (Mesa 22.3) crashes in a later
     // pipeline-statistics query when compute pushes descriptors through a
     // layout whose bindings are also visible to graphics stages.
-    mComputeLayout = CrowdDescriptors::layout(device, VK_SHADER_STAGE_COMPUTE_BIT, "hulldomain.crowd.computeLayout");
-    mLayout = CrowdDescriptors::layout(device, VK_SHADER_STAGE_ALL_GRAPHICS, "hulldomain.crowd.layout");
+    using Mode = CrowdDescriptors::Mode;
+    mComputeLayout =
+        CrowdDescriptors::layout(device, Mode::Storage, VK_SHADER_STAGE_COMPUTE_BIT, "hulldomain.crowd.computeLayout");
+    mLayout = CrowdDescriptors::layout(device, Mode::Storage, VK_SHADER_STAGE_ALL_GRAPHICS, "hulldomain.crowd.layout");
     mCull = gpu::ComputePipeline(device, mComputeLayout, crowd_cull_comp_spv, "hulldomain.crowd.cull");
     mSkin = gpu::ComputePipeline(device, mComputeLayout, crowd_skin_comp_spv, "hulldomain.crowd.skin");
 
@@ -50,13 +52,8 @@ HulldomainCrowdPass::HulldomainCrowdPass(gpu::Device& device, VkFormat colorForm
     desc.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
     desc.patchControlPoints = 3;
     mNear = gpu::Pipeline(device, desc);
-    desc.name = "hulldomain.crowd.mesh";
-    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, crowd_mesh_vert_spv},
-                   {VK_SHADER_STAGE_FRAGMENT_BIT, character_frag_crowd_spv}};
-    desc.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    desc.patchControlPoints = 0;
-    desc.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    mMesh = gpu::Pipeline(device, desc);
+    mMesh = CrowdMeshPass(device, Mode::Storage, crowd_mesh_vert_spv, character_frag_crowd_spv, colorFormat, depthFormat,
+                          "hulldomain.crowd.mesh");
 }
 
 void HulldomainCrowdPass::push(VkCommandBuffer cmd, VkPipelineBindPoint point,
@@ -107,26 +104,20 @@ void HulldomainCrowdPass::recordCompute(gpu::FrameContext& frame, GpuCrowd& crow
         gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                            VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
     }
-    // The GPU's own counts, read back when this frame slot comes round again.
-    const uint32_t slot = frame.slot();
-    const VkBufferCopy copy{0, 0, TS_CROWD_ARG_WORDS * kWord};
-    vkCmdCopyBuffer(cmd, crowd.args().handle(), crowd.argsReadback(slot).handle(), 1, &copy);
-    crowd.setArgsWritten(slot);
 }
 
 void HulldomainCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors) {
     VkCommandBuffer cmd = frame.cmd();
-    static const char* const kPassNames[TS_LOD_TIERS] = {"crowd.near", "crowd.middle", "crowd.far"};
-    const uint32_t creatures = uint32_t(crowd.creatures().size());
-    for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier) {
-        gpu::PassScope pass(frame, kPassNames[tier]);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (tier == TS_LOD_NEAR ? mNear : mMesh).handle());
+    {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mNear.handle());
+        gpu::PassScope pass(frame, "crowd.near");
         vkCmdBindIndexBuffer(cmd, crowd.indices().handle(), 0, VK_INDEX_TYPE_UINT32);
-        for (uint32_t c = 0; c < creatures; ++c) {
+        for (uint32_t c = 0; c < crowd.creatures().size(); ++c) {
             push(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, descriptors.writes(c));
-            vkCmdDrawIndexedIndirect(cmd, crowd.args().handle(), listArgsOffset(tier, c), 1, 0);
+            vkCmdDrawIndexedIndirect(cmd, crowd.args().handle(), listArgsOffset(TS_LOD_NEAR, c), 1, 0);
         }
     }
+    mMesh.record(frame, crowd, descriptors);
 }
 
 } // namespace tessera::backends

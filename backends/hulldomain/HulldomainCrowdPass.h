@@ -8,6 +8,7 @@
 /// cage (middle) and of the far mesh (far), skinned from the baked clips.
 
 #include "CrowdDescriptors.h"
+#include "CrowdMeshPass.h"
 #include "GpuCrowd.h"
 #include "tessera/gpu/ComputePipeline.h"
 #include "tessera/gpu/FrameContext.h"
@@ -38,7 +39,7 @@ private:
     gpu::ComputePipeline mCull;
     gpu::ComputePipeline mSkin;
     gpu::Pipeline mNear;
-    gpu::Pipeline mMesh;
+    CrowdMeshPass mMesh;
 };
 
 } // namespace tessera::backends

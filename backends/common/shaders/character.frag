@@ -13,12 +13,13 @@ layout(location = 2) in vec3 inTangent;
 layout(location = 3) in vec2 inUv;
 layout(location = 0) out vec4 outColor;
 #ifdef TS_CROWD
-layout(location = 4) flat in uint inEntry;
+layout(location = 4) flat in uvec4 inEntry; // CrowdListEntry
 #endif
 
 void main() {
 #ifdef TS_CROWD
-    tsCrowdSelect(crowdLists[inEntry]);
+    // Shading reads no level: 1 spares the size computation.
+    tsCrowdSelectAtLevel(tsCrowdEntry(inEntry), 1.0);
 #endif
     if (!tsLodKeepPixel(gl_FragCoord.xy, uCharacter.lod.x, uCharacter.lod.y > 0.5)) discard;
     vec3 color = tsShadeCharacter(inWorld, inNormal, inTangent, inUv);

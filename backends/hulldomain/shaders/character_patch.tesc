@@ -21,18 +21,18 @@ layout(location = 2) out vec3 outTangent[];
 layout(location = 3) out vec2 outUv[];
 #endif
 #ifdef TS_CROWD
-layout(location = 4) in float inEntry[];
+layout(location = 4) in uvec4 inEntry[]; // CrowdListEntry
 // The instance, read once per patch here and handed to every evaluated
 // point (the domain stage reads no crowd buffer).
 layout(location = 5) patch out vec4 outWorld[4];
 layout(location = 9) patch out vec4 outDisplacement;
-layout(location = 10) patch out float outEntry;
+layout(location = 10) patch out uvec4 outEntry;
 #endif
 
 void main() {
 #ifdef TS_CROWD
     // The instance's own level (its size on screen, within the frame's cap).
-    tsCrowdSelect(crowdLists[uint(inEntry[0])]);
+    tsCrowdSelect(tsCrowdEntry(inEntry[0]));
     if (gl_InvocationID == 0) {
         for (int c = 0; c < 4; ++c) outWorld[c] = uCharacter.world[c];
         outDisplacement = uCharacter.displacement;

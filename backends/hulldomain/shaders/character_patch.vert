@@ -17,7 +17,7 @@ layout(location = 0) out vec3 outPosition;
 layout(location = 1) out vec3 outNormal;
 layout(location = 2) out vec3 outTangent;
 layout(location = 3) out vec2 outUv;
-layout(location = 4) out float outEntry;
+layout(location = 4) out uvec4 outEntry; // CrowdListEntry
 void main() {
     // firstInstance is the list's base: gl_InstanceIndex is the entry.
     uint entryIndex = uint(gl_InstanceIndex);
@@ -28,7 +28,7 @@ void main() {
     outNormal = s.normal;
     outTangent = s.tangent;
     outUv = s.uv;
-    outEntry = float(entryIndex);
+    outEntry = tsCrowdEntryBits(entry);
 }
 #elif defined(TS_SINGLE_PASS)
 layout(location = 0) out uint outIndex;

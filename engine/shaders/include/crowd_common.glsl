@@ -17,16 +17,64 @@
 layout(std140, set = 0, binding = TS_BINDING_CROWD) uniform CrowdBlock {
     CrowdUniforms uCrowd;
 };
+layout(set = 0, binding = TS_BINDING_CROWD_BAKED) uniform samplerBuffer uBakedMatrices;
+
+#ifdef TS_CROWD_TEXELS
+// The emulated backends (D3D9 vertex texture fetch, D3D10 Buffer.Load):
+// instances and clips as RGBA32UI texel buffers; lists arrive as instance
+// vertex streams or near slots, never as storage.
+layout(set = 0, binding = TS_BINDING_CROWD_INSTANCES) uniform usamplerBuffer uCrowdInstances;
+layout(set = 0, binding = TS_BINDING_CROWD_CLIPS) uniform usamplerBuffer uCrowdClips;
+
+CrowdInstance tsCrowdInstance(uint i) {
+    int t = int(i) * 4;
+    CrowdInstance instance;
+    instance.sphere = uintBitsToFloat(texelFetch(uCrowdInstances, t));
+    instance.placement = uintBitsToFloat(texelFetch(uCrowdInstances, t + 1));
+    instance.animation = uintBitsToFloat(texelFetch(uCrowdInstances, t + 2));
+    instance.ids = texelFetch(uCrowdInstances, t + 3);
+    return instance;
+}
+
+BakedClip tsCrowdClip(uint i) {
+    BakedClip clip;
+    clip.frames = texelFetch(uCrowdClips, int(i) * 2);
+    clip.timing = uintBitsToFloat(texelFetch(uCrowdClips, int(i) * 2 + 1));
+    return clip;
+}
+#else
 layout(std430, set = 0, binding = TS_BINDING_CROWD_INSTANCES) readonly buffer CrowdInstanceBlock {
     CrowdInstance crowdInstances[];
 };
 layout(std430, set = 0, binding = TS_BINDING_CROWD_LISTS) TS_CROWD_LISTS_ACCESS buffer CrowdListBlock {
     CrowdListEntry crowdLists[];
 };
-layout(set = 0, binding = TS_BINDING_CROWD_BAKED) uniform samplerBuffer uBakedMatrices;
 layout(std430, set = 0, binding = TS_BINDING_CROWD_CLIPS) readonly buffer CrowdClipBlock {
     BakedClip crowdClips[];
 };
+
+CrowdInstance tsCrowdInstance(uint i) {
+    return crowdInstances[i];
+}
+
+BakedClip tsCrowdClip(uint i) {
+    return crowdClips[i];
+}
+#endif
+
+// A list entry as the stages hand it on (flat uvec4) and back.
+uvec4 tsCrowdEntryBits(CrowdListEntry e) {
+    return uvec4(e.instance, e.slot, floatBitsToUint(e.coverage), e.flags);
+}
+
+CrowdListEntry tsCrowdEntry(uvec4 bits) {
+    CrowdListEntry e;
+    e.instance = bits.x;
+    e.slot = bits.y;
+    e.coverage = uintBitsToFloat(bits.z);
+    e.flags = bits.w;
+    return e;
+}
 
 // The instance being drawn, as the character passes read it.
 CharacterUniforms uCharacter;
@@ -38,9 +86,10 @@ mat4 tsPaletteJoint(uint joint) {
     return tsBakedJoint(uBakedMatrices, gCrowdClip, gCrowdPhase, joint);
 }
 
-// Makes list entry `entry` the instance the character functions draw.
-void tsCrowdSelect(CrowdListEntry entry) {
-    CrowdInstance instance = crowdInstances[entry.instance];
+// Makes list entry `entry` the instance the character functions draw, at
+// near level `nearLevel` when it is in the near tier.
+void tsCrowdSelectAtLevel(CrowdListEntry entry, float nearLevel) {
+    CrowdInstance instance = tsCrowdInstance(entry.instance);
     CrowdCharacter c = uCrowd.characters[min(instance.ids.y, TS_CROWD_MAX_CHARACTERS - 1u)];
     mat4 world = tsCrowdWorld(instance);
     uCharacter.world = world;
@@ -52,15 +101,26 @@ void tsCrowdSelect(CrowdListEntry entry) {
     uCharacter.uvRange = c.uvRange;
     uint tier = (entry.flags >> 8u) & 255u;
     bool displace = tier == TS_LOD_NEAR && uCrowd.flags.x != 0u;
-    float level = tier == TS_LOD_NEAR ? tsLodLevel(tsLodPixels(instance.sphere, uCrowd.lod), c.boxMin.w, uCrowd.lod)
-                                      : 1.0;
+    float level = tier == TS_LOD_NEAR ? nearLevel : 1.0;
     uCharacter.displacement = vec4(displace ? c.displacement.x : 0.0, displace ? c.displacement.y : 0.0, level,
                                    c.displacement.z);
     uCharacter.counts = uvec4(c.mesh.y, 0u, 0u, c.boxMax.w > 0.5 ? 1u : 0u);
     uCharacter.lod = vec4(entry.coverage, float(entry.flags & 1u), float(tier), float(uCrowd.flags.y));
-    gCrowdClip = crowdClips[instance.ids.z];
+    gCrowdClip = tsCrowdClip(instance.ids.z);
     gCrowdPhase = instance.animation.x;
     gCrowdTint = unpackUnorm4x8(instance.ids.w).rgb;
+}
+
+// The near level of an instance of creature `creature`: its size on screen
+// times the creature's levels per pixel, within the frame's cap.
+float tsCrowdNearLevel(CrowdInstance instance) {
+    CrowdCharacter c = uCrowd.characters[min(instance.ids.y, TS_CROWD_MAX_CHARACTERS - 1u)];
+    return tsLodLevel(tsLodPixels(instance.sphere, uCrowd.lod), c.boxMin.w, uCrowd.lod);
+}
+
+// Makes list entry `entry` the instance drawn, its near level from its size.
+void tsCrowdSelect(CrowdListEntry entry) {
+    tsCrowdSelectAtLevel(entry, tsCrowdNearLevel(tsCrowdInstance(entry.instance)));
 }
 
 #endif

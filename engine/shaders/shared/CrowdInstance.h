@@ -24,11 +24,15 @@
 #define TESSERA_CROWD_INSTANCE_H
 #include "CrowdLod.h"
 #include "SharedTypes.h"
+#include "TessTrianglePattern.h"
 
 /// Creatures one crowd may mix (one list per tier and creature).
 #define TS_CROWD_MAX_CHARACTERS 8u
 /// Lists: tier-major, (tier * TS_CROWD_MAX_CHARACTERS + creature).
 #define TS_CROWD_LISTS (TS_LOD_TIERS * TS_CROWD_MAX_CHARACTERS)
+/// Words per emulated near-slot command (VkDrawIndexedIndirectCommand's 5,
+/// padded to two 16-byte texels so a render target can write it).
+#define TS_CROWD_NEAR_COMMAND_WORDS 8u
 
 TS_NAMESPACE_BEGIN
 
@@ -41,23 +45,29 @@ struct CrowdInstance {
 };
 TS_CHECK_SIZE(CrowdInstance, 64)
 
-/// One creature of the crowd (80 bytes).
+/// One creature of the crowd (96 bytes).
 struct CrowdCharacter {
     vec4 boxMin;       // xyz: compression box minimum (model space), w: near-tier levels per pixel
     vec4 boxMax;       // xyz: compression box maximum, w: 1 = bitangent is -cross(n, t)
     vec4 uvRange;      // xy: uv minimum, zw: uv maximum
     vec4 displacement; // x: scale, y: bias (0, 0: none), z: 1 = normal map, w: 0
     uvec4 mesh;        // x: first cage vertex, y: cage vertices, z: first far vertex, w: far vertices (in the crowd's vertex buffer)
+    uvec4 indices;     // x: first cage index, y: cage triangles, z: first far index, w: far triangles (in its index buffer)
 };
-TS_CHECK_SIZE(CrowdCharacter, 80)
+TS_CHECK_SIZE(CrowdCharacter, 96)
 
 struct CrowdUniforms {
     CrowdLodParams lod;
     CrowdCharacter characters[TS_CROWD_MAX_CHARACTERS];
     uvec4 counts; // x: instances, y: creatures, z: near slots, w: list capacity (entries per list)
     uvec4 flags;  // x: 1 = displacement, y: 1 = tint by tier (--lod-colors), z: near slot stride (largest cage vertex count), w: state entries (ids)
+    // The emulated backends' near tier (r2vb, streamout): per pattern class
+    // (TessTrianglePattern.h) x = first index, y = index count, z = first
+    // point code (vertexOffset) in the crowd's triangle pattern library.
+    uvec4 nearPatterns[TS_EMU_TRIANGLE_CLASSES];
+    uvec4 emulated; // x: instance stride of a near slot's draw (largest cage triangle count), yzw: 0
 };
-TS_CHECK_SIZE(CrowdUniforms, 832)
+TS_CHECK_SIZE(CrowdUniforms, 1104)
 
 /// One drawn instance in a list (16 bytes).
 struct CrowdListEntry {
@@ -67,6 +77,51 @@ struct CrowdListEntry {
     uint flags;    // bit 0: the fading-out copy; bits 8..15: tier
 };
 TS_CHECK_SIZE(CrowdListEntry, 16)
+
+/// One near slot of an emulated backend's near tier (16 bytes): the
+/// instance whose compressed cage the slot holds and how it is drawn. The
+/// level is stored, not recomputed, so the draw's pattern class and the
+/// points it places come from the same number.
+struct CrowdNearSlot {
+    uint instance; // index into the frame's CrowdInstance[]
+    uint flags;    // bit 0: the fading-out copy; bits 8..15: tier (TS_LOD_NEAR); bit 31: slot in use
+    float coverage;
+    float level;   // the near level (tsLodLevel), at most TS_EMU_MAX_LEVEL
+};
+TS_CHECK_SIZE(CrowdNearSlot, 16)
+
+/// The list entry a near slot draws (its slot index in `slot`).
+TS_INLINE CrowdListEntry tsCrowdNearEntry(CrowdNearSlot s, uint slot) {
+    CrowdListEntry e;
+    e.instance = s.instance;
+    e.slot = slot;
+    e.coverage = s.coverage;
+    e.flags = s.flags & 0xffffu;
+    return e;
+}
+
+/// The indexed indirect command (VkDrawIndexedIndirectCommand, padded to
+/// TS_CROWD_NEAR_COMMAND_WORDS words) at (creature `creature`, slot `slot`)
+/// of an emulated backend's near commands: creature c's draw binds c's maps
+/// and runs the commands of every slot, and a slot draws only in its own
+/// instance's creature (`slotCreature`). It draws the creature's cage
+/// triangles as instances (slot * emulated.x + triangle), each one the
+/// pattern of the slot's level. Words: index count, instance count, first
+/// index, vertex offset (first point code); the fifth, first instance,
+/// comes back in `firstInstance`.
+TS_INLINE uvec4 tsCrowdNearCommand(CrowdUniforms u, CrowdNearSlot s, uint slotCreature, uint creature, uint slot,
+                                   TS_OUT(uint) firstInstance) {
+    firstInstance = slot * u.emulated.x;
+    if ((s.flags & 0x80000000u) == 0u || slotCreature != creature || creature >= TS_CROWD_MAX_CHARACTERS)
+        return uvec4(0u, 0u, 0u, 0u);
+    const uvec4 pattern = u.nearPatterns[tsEmuTriangleClass(tsEmuTriangleLevel(s.level))];
+    return uvec4(pattern.y, u.characters[creature].indices.y, pattern.x, pattern.z);
+}
+
+/// The first word of command (creature, slot) in the near commands.
+TS_INLINE uint tsCrowdNearCommandBase(uint creature, uint slot, uint nearSlots) {
+    return (creature * nearSlots + slot) * TS_CROWD_NEAR_COMMAND_WORDS;
+}
 
 /// The region of list (tier, creature) in the lists buffer.
 TS_INLINE uint tsCrowdListBase(uint tier, uint creature, uint capacity) {
@@ -93,6 +148,9 @@ TS_NAMESPACE_END
 #define TS_BINDING_CROWD_ARGS 17
 #define TS_BINDING_CROWD_NEAR 18
 #define TS_BINDING_CROWD_SLOTS 19
+/// The crowd's index buffer as an R32UI texel buffer (the emulated near
+/// tier fetches a cage triangle's corners by instance).
+#define TS_BINDING_CROWD_INDICES 20
 
 /// The indirect buffer (uint words): per list an indexed draw command
 /// (5 words: indexCount, instanceCount, firstIndex, vertexOffset,
