@@ -54,10 +54,15 @@ std::vector<double> idsOf(const JsonValue& tiers, const char* source, const char
 
 } // namespace
 
-// The GPU's lists (hulldomain's compute pass, run on the frame's instances
-// against its own LOD state) hold exactly the agents the CPU reference puts
-// in each tier, frame after frame, cross-fade copies included.
-TEST(CrowdLod, GpuBinningEqualsTheCpuReference) {
+// Each backend's GPU culling and binning (hulldomain's compute pass,
+// streamout's geometry shaders and stream-out, r2vb's render targets), run
+// on the frame's instances against its own LOD state, puts exactly the
+// agents the CPU reference puts in each tier, frame after frame, cross-fade
+// copies included, for views inside, across and away from the crowd.
+class CrowdLodBinning : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CrowdLodBinning, GpuBinningEqualsTheCpuReference) {
+    const std::string backend = GetParam();
     const std::vector<std::pair<std::string, std::vector<std::string>>> views = {
         {"inside", {"--orbit-distance", "4"}},
         {"across", {"--orbit-distance", "14"}},
@@ -65,7 +70,7 @@ TEST(CrowdLod, GpuBinningEqualsTheCpuReference) {
     std::array<size_t, 3> seen{};
     for (const auto& [name, flags] : views) {
         SCOPED_TRACE(name);
-        const TierRun run = runTiers("hulldomain", name, flags);
+        const TierRun run = runTiers(backend, name, flags);
         ASSERT_EQ(run.result.exitCode, 0) << run.command << "\n" << run.result.output;
         EXPECT_TRUE(validationClean(run.result)) << run.command << "\n" << run.result.output;
         for (size_t t = 0; t < kTiers.size(); ++t) {
@@ -73,27 +78,23 @@ TEST(CrowdLod, GpuBinningEqualsTheCpuReference) {
             const auto cpu = idsOf(run.tiers, "referenceTiers", kTiers[t]);
             EXPECT_EQ(gpu, cpu) << kTiers[t] << " tier differs: " << run.command;
             seen[t] += gpu.size();
-            std::cout << "[crowd lod] " << name << " " << kTiers[t] << ": " << gpu.size() << " on the GPU, "
-                      << cpu.size() << " in the CPU reference\n";
+            std::cout << "[crowd lod] " << backend << " " << name << " " << kTiers[t] << ": " << gpu.size()
+                      << " on the GPU, " << cpu.size() << " in the CPU reference\n";
         }
     }
     for (size_t t = 0; t < kTiers.size(); ++t) EXPECT_GT(seen[t], 0u) << "no view put anybody in " << kTiers[t];
 }
 
-// The null backend runs the same shared rule on the CPU on its own: its
-// lists equal the LOD manager's too.
-TEST(CrowdLod, NullBackendEqualsTheCpuReference) {
-    const TierRun run = runTiers("null", "null", {"--orbit-distance", "6"});
-    ASSERT_EQ(run.result.exitCode, 0) << run.command << "\n" << run.result.output;
-    for (const char* tier : kTiers)
-        EXPECT_EQ(idsOf(run.tiers, "backendTiers", tier), idsOf(run.tiers, "referenceTiers", tier)) << tier;
-}
+INSTANTIATE_TEST_SUITE_P(EveryBackend, CrowdLodBinning, ::testing::Values("hulldomain", "streamout", "r2vb", "null"),
+                         [](const auto& info) { return info.param; });
 
-// A backend without instanced crowds says so when asked for the tiers.
-TEST(CrowdLod, TiersOfABackendWithoutInstancingFailClearly) {
-    const TierRun run = runTiers("r2vb", "r2vb", {});
-    EXPECT_EQ(run.result.exitCode, 1) << run.result.output;
-    const auto errors = errorLines(run.result.output);
-    ASSERT_EQ(errors.size(), 1u) << run.result.output;
+// --crowd-tiers needs the crowd scene: elsewhere it is one clear error.
+TEST(CrowdLod, TiersWithoutACrowdFailClearly) {
+    const std::string json = (testOutputDir("crowd_lod") / "no_crowd.json").string();
+    const ProcessResult result =
+        runDemo({"--scene", "terrain", "--backend", "null", "--frames", "1", "--crowd-tiers", json});
+    EXPECT_EQ(result.exitCode, 1) << result.output;
+    const auto errors = errorLines(result.output);
+    ASSERT_EQ(errors.size(), 1u) << result.output;
     EXPECT_NE(errors.front().find("--crowd-tiers"), std::string::npos) << errors.front();
 }
