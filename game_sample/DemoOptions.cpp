@@ -20,10 +20,10 @@ Result<uint32_t> parseCount(const std::string& flag, const std::string& text, ui
     return value;
 }
 
-// --agents: one count, or a comma list of counts for --bench crowd-sim.
+// --agents: one count, or a comma list of counts for --bench crowd and crowd-sim.
 Result<std::vector<uint32_t>> parseAgents(const std::string& text) {
     const Error bad = fail("--agents expects a whole number of agents from 1 to ",
-                           std::to_string(crowd::Crowd::kMaxAgents), " (a comma list with --bench crowd-sim), got \"",
+                           std::to_string(crowd::Crowd::kMaxAgents), " (a comma list with --bench crowd or crowd-sim), got \"",
                            text, "\"");
     std::vector<uint32_t> counts;
     std::stringstream stream(text);
@@ -146,13 +146,20 @@ Scene:
                         tessellated at L, with no LOD budget unless the
                         --lod-* flags give one
   --lod-near PX         LOD thresholds: characters at least PX pixels tall
-  --lod-far PX          on screen are tessellated (default 128), below the
-                        far one drawn with the simplest mesh (default 40),
+  --lod-far PX          on screen are tessellated (default 192), below the
+                        far one drawn with the simplest mesh (default 64),
                         the cage in between
   --lod-budget T        at most T tessellated triangles a frame (default:
                         24000000 on a GPU, 150000 on lavapipe)
   --lod-near-max N      at most N tessellated characters a frame (default:
                         1024 on a GPU, 4 on lavapipe)
+  --lod-middle-max N    at most N characters drawn as their untessellated
+                        cage a frame (the rest take the far mesh)
+  --lod-edge PX         tessellate near characters to edges of about PX
+                        pixels (default 2 on a GPU, 3 on lavapipe)
+  --lod-far-triangles N the far tier's mesh simplified to at most N
+                        triangles (default 120 on a GPU, 64 on lavapipe;
+                        the content's far mesh has about 280)
   --lod-colors          tint characters by LOD tier: near green, middle
                         yellow, far red
   --crowd-tiers FILE    write the last frame's crowd agents per LOD tier,
@@ -225,6 +232,17 @@ Output:
                         integration: median, mean, max), memory per agent,
                         overlaps, arrivals, stuck and fleeing agents, field
                         tiles solved, threads (--threads) and the CPU
+  --bench crowd         run the crowd rendering benchmark at 1920x1080 (or
+                        --width/--height): for each --agents size (default
+                        1000,10000,65000) the simulated crowd on the terrain
+                        from one camera over it, and the terrain alone from
+                        the same camera, on every backend (--backend all) or
+                        one; --warmup frames (default 10) then --frames
+                        measured frames (default 30); reports GPU ms per
+                        pass (cull and bin, skin, each tier's draw), GPU and
+                        CPU frame ms, simulation ms, instances and
+                        triangles per tier, GPU memory per agent and the
+                        ratios to hulldomain and to the terrain alone
   --steps N             --bench crowd-sim's measured steps
   --out FILE            where --bench writes its JSON (default: stdout)
   --out-dir DIR         where --bench writes its per-backend traces,
@@ -305,6 +323,24 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
                             "least one cage's worth (e.g. 10000)");
             o.lodBudget = n.value();
         }
+        else if (flag == "--lod-middle-max") {
+            TESSERA_TAKE(text);
+            auto n = parseCount(flag, text, 0, 10000000);
+            if (!n) return n.error();
+            o.lodMiddleMax = n.value();
+        }
+        else if (flag == "--lod-edge") {
+            TESSERA_TAKE(text);
+            auto n = parseNumber(flag, text, 0.25f, 64.0f);
+            if (!n) return n.error();
+            o.lodEdge = n.value();
+        }
+        else if (flag == "--lod-far-triangles") {
+            TESSERA_TAKE(text);
+            auto n = parseCount(flag, text, 4, 100000);
+            if (!n) return n.error();
+            o.lodFarTriangles = n.value();
+        }
         else if (flag == "--lod-near-max") {
             TESSERA_TAKE(text);
             auto n = parseCount(flag, text, 0, 100000);
@@ -344,8 +380,9 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         else if (flag == "--out-dir") { TESSERA_TAKE(v); o.benchOutDir = v; }
         else if (flag == "--bench") {
             TESSERA_TAKE(v);
-            if (v != "terrain" && v != "characters" && v != "crowd-sim")
-                return fail("--bench expects \"terrain\", \"characters\" or \"crowd-sim\", got \"", v, "\"");
+            if (v != "terrain" && v != "characters" && v != "crowd" && v != "crowd-sim")
+                return fail("--bench expects \"terrain\", \"characters\", \"crowd\" or \"crowd-sim\", got \"", v,
+                            "\"");
             o.bench = v;
         } else if (flag == "--terrain-mode") {
             TESSERA_TAKE(v);
@@ -379,8 +416,14 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
             if (!splat) return splat.error();
             o.splats.push_back(splat.value());
         }
-        else if (flag == "--width") TESSERA_TAKE_COUNT(width, 16, 16384)
-        else if (flag == "--height") TESSERA_TAKE_COUNT(height, 16, 16384)
+        else if (flag == "--width") {
+            TESSERA_TAKE_COUNT(width, 16, 16384)
+            o.sizeGiven = true;
+        }
+        else if (flag == "--height") {
+            TESSERA_TAKE_COUNT(height, 16, 16384)
+            o.sizeGiven = true;
+        }
         else if (flag == "--frames") TESSERA_TAKE_COUNT(frames, 1, 10000000)
         else if (flag == "--warmup") {
             TESSERA_TAKE_COUNT(warmup, 0, 1000000)
@@ -405,8 +448,8 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
 #undef TESSERA_TAKE
     }
     if (o.backend == "all" && o.bench.empty())
-        return fail("--backend all compares the backends in --bench terrain or characters; pick one backend for the "
-                    "demo");
+        return fail("--backend all compares the backends in --bench terrain, characters or crowd; pick one backend "
+                    "for the demo");
     const float lodNear = o.lodNear.value_or(lod::LodPolicy{}.nearPixels);
     const float lodFar = o.lodFar.value_or(lod::LodPolicy{}.farPixels);
     if (lodFar > lodNear)
@@ -415,10 +458,12 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
     if (!o.models.empty() && !o.sceneGiven) o.scene = "characters";
     const bool crowdFlags = !o.agents.empty() || crowdDrawGiven;
     if (crowdFlags && !o.sceneGiven && o.bench.empty()) o.scene = "crowd";
-    if (crowdFlags && o.scene != "crowd" && o.bench != "crowd-sim")
-        return fail(!o.agents.empty() ? "--agents" : "--crowd-draw", " is for --scene crowd or --bench crowd-sim");
-    if (o.agents.size() > 1 && o.bench != "crowd-sim")
-        return fail("--agents takes one count in the crowd scene (a list is for --bench crowd-sim), got ",
+    const bool crowdBench = o.bench == "crowd" || o.bench == "crowd-sim";
+    if (crowdFlags && o.scene != "crowd" && !crowdBench)
+        return fail(!o.agents.empty() ? "--agents" : "--crowd-draw",
+                    " is for --scene crowd, --bench crowd or --bench crowd-sim");
+    if (o.agents.size() > 1 && !crowdBench)
+        return fail("--agents takes one count in the crowd scene (a list is for --bench crowd and crowd-sim), got ",
                     std::to_string(o.agents.size()));
     if (!o.models.empty() && o.scene != "characters")
         return fail("--model places models in the characters scene; drop --scene ", o.scene);

@@ -32,6 +32,7 @@ struct DemoOptions {
     bool wireframe = false;
     uint32_t width = 1280;
     uint32_t height = 720;
+    bool sizeGiven = false;             ///< --width or --height was given (--bench crowd defaults to 1920x1080)
     uint32_t frames = 0;                ///< 0: the mode's default
     uint32_t warmup = 0;
     bool warmupGiven = false;           ///< --warmup was given (--bench crowd-sim takes 0 as none)
@@ -81,20 +82,24 @@ struct DemoOptions {
     std::optional<float> lodNear, lodFar;
     std::optional<uint64_t> lodBudget;
     std::optional<uint32_t> lodNearMax;
+    std::optional<uint32_t> lodMiddleMax;      ///< --lod-middle-max N: untessellated cages per frame
+    std::optional<float> lodEdge;              ///< --lod-edge PX: the near tier's tessellated edge in pixels
+    std::optional<uint32_t> lodFarTriangles;   ///< --lod-far-triangles N: the far mesh's triangles at most
     bool lodColors = false;             ///< --lod-colors: tint instances by LOD tier
 
     /// --agents N (the crowd scene's agents; unset: 2000) or, with --bench
-    /// crowd-sim, a comma list of crowd sizes (unset: 1000,10000,65000). Each
-    /// from 1 to crowd::Crowd::kMaxAgents.
+    /// crowd or crowd-sim, a comma list of crowd sizes (unset:
+    /// 1000,10000,65000). Each from 1 to crowd::Crowd::kMaxAgents.
     std::vector<uint32_t> agents;
     uint32_t crowdDraw = 48;            ///< --crowd-draw K: agents drawn in the crowd scene, the nearest in view
     uint32_t threads = 0;               ///< --threads N: the crowd's threads (0: every hardware thread)
     uint32_t steps = 0;                 ///< --steps N: --bench crowd-sim's measured steps (0: its default)
 
     /// --bench terrain (the Table 2 benchmark), characters (two-pass vs
-    /// single-pass, amplification, Table 1, compression error) or crowd-sim
-    /// (the crowd simulation's step time, memory and behaviour; no GPU)
-    /// instead of the flythrough.
+    /// single-pass, amplification, Table 1, compression error), crowd (the
+    /// instanced crowd's GPU passes, frame times, tiers and memory per crowd
+    /// size and backend) or crowd-sim (the crowd simulation's step time,
+    /// memory and behaviour; no GPU) instead of the flythrough.
     std::string bench;
     std::string benchOut;               ///< --out FILE (default: stdout)
     /// --out-dir DIR: where --bench writes one Chrome trace per backend

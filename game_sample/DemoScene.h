@@ -48,6 +48,8 @@ public:
     /// renderer takes them as pending splats for the GPU copy), then steps
     /// the crowd once, which sees the new craters.
     void update(uint32_t frame);
+    /// Fixes the camera at `pose` from now on (as --camera does).
+    void fixCamera(const scene::CameraPose& pose) { mFixedPose = pose; }
     uint32_t impactsLanded() const { return mNextImpact; }
 
 private:

@@ -16,7 +16,6 @@ Result<std::unique_ptr<InstancedCrowd>> InstancedCrowd::create(const CharacterAs
         if (!asset.asset.farMesh)
             return Error{asset.file + ": no far mesh for the crowd's far tier (the loader makes one for every glTF)"};
         parts.push_back(character::bakeAnimation(asset.asset));
-        crowd->mFarMeshes.push_back(&*asset.asset.farMesh);
     }
     crowd->mBaked = character::combine(parts);
     return crowd;
@@ -26,6 +25,23 @@ backend::CrowdDesc InstancedCrowd::desc(const CharacterAssets& assets, uint32_t 
                                         const lod::LodPolicy& policy) {
     mCharacters.clear();
     mCosts.clear();
+    mFarMeshes.clear();
+    mSimplifiedFar.clear();
+    mSimplifiedFar.reserve(assets.size());
+    for (size_t i = 0; i < assets.size(); ++i) {
+        // The policy may want a coarser far mesh than the content's (a CPU
+        // rasterizer pays for every far triangle): simplified once, here.
+        const character::CageMesh& far = *assets[i].asset.farMesh;
+        if (policy.farMeshTriangles > 0 && far.triangleCount() > policy.farMeshTriangles) {
+            auto coarser = character::simplifyCage(far, {policy.farMeshTriangles});
+            if (coarser) {
+                mSimplifiedFar.push_back(std::move(coarser.value().mesh));
+                mFarMeshes.push_back(&mSimplifiedFar.back());
+                continue;
+            }
+        }
+        mFarMeshes.push_back(&far);
+    }
     for (size_t i = 0; i < assets.size(); ++i) {
         const CrowdAsset& asset = assets[i];
         // The instance's sphere is the box's around its centre: levels per
@@ -36,7 +52,7 @@ backend::CrowdDesc InstancedCrowd::desc(const CharacterAssets& assets, uint32_t 
         cost.cageTriangles = asset.asset.cage.triangleCount();
         cost.farTriangles = mFarMeshes[i]->triangleCount();
         mCosts.push_back(cost);
-        mCharacters.push_back({assets.handle(i), mFarMeshes[i], cost.levelPerPixel});
+        mCharacters.push_back({assets.handle(i), &asset.asset.cage, mFarMeshes[i], cost.levelPerPixel});
     }
     const uint32_t nearSlots = policy.budget.maxNearInstances;
     backend::CrowdDesc desc;
@@ -52,14 +68,14 @@ uint32_t InstancedCrowd::bakedClip(uint32_t asset, int clip) const {
     return mBaked.globalClip(asset, clip >= 0 ? character::bakedClipIndex(uint32_t(clip)) : character::kBakedRestPose);
 }
 
-void InstancedCrowd::begin() {
-    mInstances.clear();
-    mLodInstances.clear();
+void InstancedCrowd::begin(size_t count) {
+    mInstances.resize(count);
+    mLodInstances.resize(count);
 }
 
-void InstancedCrowd::add(const shader::CrowdInstance& instance) {
-    mInstances.push_back(instance);
-    mLodInstances.push_back({instance.sphere, instance.ids.x, instance.ids.y});
+void InstancedCrowd::set(size_t i, const shader::CrowdInstance& instance) {
+    mInstances[i] = instance;
+    mLodInstances[i] = {instance.sphere, instance.ids.x, instance.ids.y};
 }
 
 const lod::LodFrame& InstancedCrowd::select(const lod::LodView& view, const lod::LodPolicy& policy) {

@@ -8,6 +8,7 @@
 #include "CharacterAssets.h"
 #include "tessera/backend/CrowdDesc.h"
 #include "tessera/character/BakedAnimation.h"
+#include "tessera/character/FarMesh.h"
 #include "tessera/core/Result.h"
 #include "tessera/lod/LodManager.h"
 #include "tessera/scene/Camera.h"
@@ -31,10 +32,11 @@ public:
     /// The global baked clip of asset `asset`'s clip `clip` (-1: rest pose).
     uint32_t bakedClip(uint32_t asset, int clip) const;
 
-    /// Starts a frame: clears the instances.
-    void begin();
-    /// Adds one agent's instance (CrowdInstance.h) and its LOD sphere.
-    void add(const shader::CrowdInstance& instance);
+    /// Starts a frame of `count` instances (set each with set()).
+    void begin(size_t count);
+    /// Instance `i` of the frame (CrowdInstance.h) and its LOD sphere; safe
+    /// to call for different `i` from several threads.
+    void set(size_t i, const shader::CrowdInstance& instance);
     /// Runs the LOD manager over the frame's instances (the CPU reference:
     /// the budget's cuts reach the GPU in the draw's parameters).
     const lod::LodFrame& select(const lod::LodView& view, const lod::LodPolicy& policy);
@@ -55,6 +57,7 @@ private:
     std::vector<lod::LodCharacter> mCosts;
     std::vector<backend::CrowdCharacterDesc> mCharacters;
     std::vector<const character::CageMesh*> mFarMeshes;
+    std::vector<character::CageMesh> mSimplifiedFar; ///< reserved: mFarMeshes point into it
     lod::LodManager mLod;
     std::vector<shader::CrowdInstance> mInstances;
     std::vector<lod::LodInstance> mLodInstances;

@@ -17,6 +17,9 @@ Result<lod::LodPolicy> lodPolicyFor(const DemoOptions& options, lod::DeviceClass
     if (options.lodFar) policy.farPixels = *options.lodFar;
     if (options.lodBudget) policy.budget.maxTessellatedTriangles = *options.lodBudget;
     if (options.lodNearMax) policy.budget.maxNearInstances = *options.lodNearMax;
+    if (options.lodMiddleMax) policy.budget.maxMiddleInstances = *options.lodMiddleMax;
+    if (options.lodEdge) policy.targetEdgePixels = *options.lodEdge;
+    if (options.lodFarTriangles) policy.farMeshTriangles = *options.lodFarTriangles;
     if (Status ok = policy.validate(); !ok) return ok.error();
     return policy;
 }

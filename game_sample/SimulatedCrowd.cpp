@@ -2,6 +2,7 @@
 
 #include "CrowdSetup.h"
 #include "tessera/core/Log.h"
+#include "tessera/core/ParallelFor.h"
 #include "tessera/profiler/CpuScope.h"
 #include "tessera/profiler/Profiler.h"
 
@@ -28,7 +29,13 @@ constexpr float kOrbitDistance = 30.0f; // metres, unless --orbit-distance
 constexpr float kOrbitRise = 0.9f;
 constexpr float kOrbitMinHeight = 4.0f; // at least this high, to see over the agents
 constexpr float kOrbitClearance = 0.5f; // over ground rising under it: this share of the height
-constexpr float kLookHeight = 0.7f;     // the camera aims this high above the spawn's centre
+// acrossPose: metres outside the spawn disc, and the height: a person's
+// eye level plus a rise with the disc's size, so a large crowd's far side
+// stays in view over the near agents.
+constexpr float kAcrossMargin = 4.0f;
+constexpr float kAcrossHeight = 2.5f;
+constexpr float kAcrossRise = 0.08f;
+constexpr float kLookHeight = 0.7f; // the camera aims this high above the spawn's centre
 
 std::string describeGait(const CrowdGait& gait, const CharacterAssets& assets) {
     char text[160];
@@ -83,6 +90,16 @@ Result<std::unique_ptr<SimulatedCrowd>> SimulatedCrowd::create(const DemoOptions
     return self;
 }
 
+scene::CameraPose SimulatedCrowd::acrossPose() const {
+    const float radius = mLayout.spawn.halfSize.x;
+    CameraOrbit across = mOrbit;
+    across.distance = radius + kAcrossMargin;
+    across.height = kAcrossHeight + kAcrossRise * radius;
+    across.lookHeight = 0.0f;
+    across.clearance = kOrbitClearance * across.height;
+    return across.pose(*mTerrain, 0.0);
+}
+
 crowd::CrowdSettings SimulatedCrowd::settings(uint32_t threads) {
     crowd::CrowdSettings settings;
     settings.threads = threads;
@@ -116,8 +133,8 @@ std::string SimulatedCrowd::drawingMode(const std::string& backend, bool gpu) co
     if (mInstancedActive)
         return "crowd: every agent drawn instanced, culled and sorted into LOD tiers " +
                std::string(gpu ? "on the GPU by " : "on the CPU by ") + backend;
-    return mDrawCount ? "crowd: the " + std::to_string(mDrawCount) + " nearest in view drawn with the character path (" +
-                            backend + " draws no instanced crowds)"
+    return mDrawCount ? "crowd: the " + std::to_string(mDrawCount) +
+                            " nearest in view drawn with the character path (" + backend + " draws no instanced crowds)"
                       : "crowd: none drawn (--crowd-draw 0)";
 }
 
@@ -161,30 +178,35 @@ glm::mat4 SimulatedCrowd::agentWorld(uint32_t agent, uint32_t creature) const {
 void SimulatedCrowd::updateInstances(const scene::Camera& camera, const CharacterLevels& levels) {
     const crowd::CrowdAgents& agents = mCrowd->agents();
     const uint32_t creatures = uint32_t(mAssets.size());
-    mInstanced->begin();
-    for (uint32_t i = 0; i < agents.id.size(); ++i) {
-        const uint32_t creature = agents.id[i] % creatures;
-        const CreatureGait& gait = mGait.creatures[creature];
-        const scene::Aabb& box = mAssets[creature].box;
-        // As agentWorld: the creature grows with the agent's radius.
-        const float scale = gait.scale * agents.radius[i] / mGait.strideRadius;
-        const glm::vec3 p = agents.position[i];
-        const glm::vec3 centre = box.center();
-        shader::CrowdInstance instance;
-        // A sphere holding the box at any heading: the box's, grown by how
-        // far its centre sits off the vertical axis.
-        instance.sphere = glm::vec4(p + glm::vec3(0.0f, scale * centre.y, 0.0f),
-                                    scale * (glm::length(box.extents()) + glm::length(glm::vec2(centre.x, centre.z))));
-        instance.placement = glm::vec4(p, agents.heading[i]);
-        instance.animation = glm::vec4(agents.phase[i], scale, 0.0f, 0.0f);
-        const int clip = agents.clip[i] == crowd::AgentClip::Walk ? gait.walkClip : gait.idleClip;
-        // Variety, as the Froblins had: every agent its own shade.
-        const uint32_t h = agents.id[i] * 2654435761u;
-        const uint32_t tint = (215u + ((h >> 8) & 31u)) | ((215u + ((h >> 16) & 31u)) << 8) |
-                              ((215u + ((h >> 24) & 31u)) << 16) | (255u << 24);
-        instance.ids = glm::uvec4(agents.id[i], creature, mInstanced->bakedClip(creature, clip), tint);
-        mInstanced->add(instance);
-    }
+    const uint32_t count = uint32_t(agents.id.size());
+    mInstanced->begin(count);
+    // Independent per agent: spread over the cores (65,000 agents a frame).
+    core::parallelForRanges(count, 4096, mCrowd->settings().threads, [&](core::IndexRange range) {
+        for (uint32_t i = range.begin; i < range.end; ++i) {
+            const uint32_t creature = agents.id[i] % creatures;
+            const CreatureGait& gait = mGait.creatures[creature];
+            const scene::Aabb& box = mAssets[creature].box;
+            // As agentWorld: the creature grows with the agent's radius.
+            const float scale = gait.scale * agents.radius[i] / mGait.strideRadius;
+            const glm::vec3 p = agents.position[i];
+            const glm::vec3 centre = box.center();
+            shader::CrowdInstance instance;
+            // A sphere holding the box at any heading: the box's, grown by how
+            // far its centre sits off the vertical axis.
+            instance.sphere =
+                glm::vec4(p + glm::vec3(0.0f, scale * centre.y, 0.0f),
+                          scale * (glm::length(box.extents()) + glm::length(glm::vec2(centre.x, centre.z))));
+            instance.placement = glm::vec4(p, agents.heading[i]);
+            instance.animation = glm::vec4(agents.phase[i], scale, 0.0f, 0.0f);
+            const int clip = agents.clip[i] == crowd::AgentClip::Walk ? gait.walkClip : gait.idleClip;
+            // Variety, as the Froblins had: every agent its own shade.
+            const uint32_t h = agents.id[i] * 2654435761u;
+            const uint32_t tint = (215u + ((h >> 8) & 31u)) | ((215u + ((h >> 16) & 31u)) << 8) |
+                                  ((215u + ((h >> 24) & 31u)) << 16) | (255u << 24);
+            instance.ids = glm::uvec4(agents.id[i], creature, mInstanced->bakedClip(creature, clip), tint);
+            mInstanced->set(i, instance);
+        }
+    });
     lod::LodPolicy policy = levels.lod;
     policy.fixedLevel = levels.fixedLevel.value_or(0.0f);
     mInstanced->select(lod::LodView::fromCamera(camera, levels.viewportHeight, levels.maxLevel), policy);

@@ -59,6 +59,12 @@ public:
     /// Circling the spawn's centre (--orbit-distance, default 30 m), high
     /// enough to look over the agents.
     scene::CameraPose orbitPose(double seconds) const override { return mOrbit.pose(*mTerrain, seconds); }
+    /// The crowd seen across, as someone at its edge would: from just
+    /// outside the spawn disc on the sun's side, a few metres up (higher for
+    /// a larger disc), looking at its centre, so the nearest agents are
+    /// tessellated and the far side is in the far tier (the crowd
+    /// benchmark's view).
+    scene::CameraPose acrossPose() const;
 
 private:
     /// Where an agent's creature can reach at any heading and pose, at the

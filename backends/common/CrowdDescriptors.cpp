@@ -13,16 +13,17 @@ constexpr VkDescriptorType kTexel = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
 
 // Buffer bindings of each mode, in the order the constructor fills them.
 constexpr std::pair<uint32_t, VkDescriptorType> kStorageBuffers[] = {
-    {TS_BINDING_FRAME, kUniform},          {TS_BINDING_CROWD, kUniform},
-    {TS_BINDING_CROWD_INSTANCES, kStorage}, {TS_BINDING_CROWD_LISTS, kStorage},
-    {TS_BINDING_CROWD_CLIPS, kStorage},    {TS_BINDING_CROWD_VERTICES, kStorage},
-    {TS_BINDING_CROWD_STATE, kStorage},    {TS_BINDING_CROWD_ARGS, kStorage},
-    {TS_BINDING_CROWD_NEAR, kStorage},     {TS_BINDING_CROWD_SLOTS, kStorage}};
-constexpr uint32_t kStorageTexels[] = {TS_BINDING_CROWD_BAKED};
+    {TS_BINDING_FRAME, kUniform},       {TS_BINDING_CROWD, kUniform},       {TS_BINDING_CROWD_INSTANCES, kStorage},
+    {TS_BINDING_CROWD_LISTS, kStorage}, {TS_BINDING_CROWD_CLIPS, kStorage}, {TS_BINDING_CROWD_VERTICES, kStorage},
+    {TS_BINDING_CROWD_STATE, kStorage}, {TS_BINDING_CROWD_ARGS, kStorage},  {TS_BINDING_CROWD_NEAR, kStorage},
+    {TS_BINDING_CROWD_SLOTS, kStorage}};
+constexpr uint32_t kStorageTexels[] = {TS_BINDING_CROWD_BAKED, TS_BINDING_CROWD_BAKED_VERTICES,
+                                       TS_BINDING_CROWD_CLIP_MESHES};
 constexpr std::pair<uint32_t, VkDescriptorType> kTexelBuffers[] = {{TS_BINDING_FRAME, kUniform},
                                                                    {TS_BINDING_CROWD, kUniform}};
-constexpr uint32_t kTexelTexels[] = {TS_BINDING_CROWD_BAKED, TS_BINDING_CROWD_INSTANCES, TS_BINDING_CROWD_CLIPS,
-                                     TS_BINDING_CROWD_NEAR,  TS_BINDING_CROWD_SLOTS,     TS_BINDING_CROWD_INDICES};
+constexpr uint32_t kTexelTexels[] = {
+    TS_BINDING_CROWD_BAKED, TS_BINDING_CROWD_INSTANCES, TS_BINDING_CROWD_CLIPS,          TS_BINDING_CROWD_NEAR,
+    TS_BINDING_CROWD_SLOTS, TS_BINDING_CROWD_INDICES,   TS_BINDING_CROWD_BAKED_VERTICES, TS_BINDING_CROWD_CLIP_MESHES};
 constexpr uint32_t kImageBindings[] = {TS_BINDING_BASE_COLOR, TS_BINDING_NORMAL_MAP, TS_BINDING_DISPLACEMENT};
 
 std::span<const std::pair<uint32_t, VkDescriptorType>> buffersOf(CrowdDescriptors::Mode mode) {
@@ -52,15 +53,18 @@ CrowdDescriptors::CrowdDescriptors(Mode mode, GpuCrowd& crowd, uint32_t slot, co
     : mCrowd(crowd) {
     auto whole = [](gpu::Buffer& b) { return VkDescriptorBufferInfo{b.handle(), 0, VK_WHOLE_SIZE}; };
     if (mode == Mode::Storage) {
-        mBuffers = {frame.descriptor(),  uniforms.descriptor(), whole(crowd.instances(slot)), whole(crowd.lists()),
-                    whole(crowd.clips()), whole(crowd.vertices()), whole(crowd.state()),        whole(crowd.args()),
-                    whole(crowd.nearCages()), whole(crowd.nearOwners())};
+        mBuffers = {frame.descriptor(),       uniforms.descriptor(), whole(crowd.instances(slot)),
+                    whole(crowd.lists()),     whole(crowd.clips()),  whole(crowd.vertices()),
+                    whole(crowd.state()),     whole(crowd.args()),   whole(crowd.nearCages()),
+                    whole(crowd.nearOwners())};
         mTexels[0] = crowd.bakedView();
+        mTexels[1] = crowd.bakedVerticesView();
+        mTexels[2] = crowd.clipMeshesView();
     } else {
         mBuffers[0] = frame.descriptor();
         mBuffers[1] = uniforms.descriptor();
-        mTexels = {crowd.bakedView(),     crowd.instancesView(slot), crowd.clipsView(),
-                   crowd.nearCagesView(), crowd.nearSlotsView(),     crowd.indicesView()};
+        mTexels = {crowd.bakedView(),     crowd.instancesView(slot), crowd.clipsView(),         crowd.nearCagesView(),
+                   crowd.nearSlotsView(), crowd.indicesView(),       crowd.bakedVerticesView(), crowd.clipMeshesView()};
     }
     const auto buffers = buffersOf(mode);
     const auto texels = texelsOf(mode);

@@ -4,8 +4,6 @@
 #include "tessera/gpu/Device.h"
 #include "tessera/gpu/FrameContext.h"
 
-#include <cstddef>
-
 namespace tessera::backends {
 
 CrowdMeshPass::CrowdMeshPass(gpu::Device& device, CrowdDescriptors::Mode mode, std::span<const uint32_t> vertex,
@@ -18,16 +16,10 @@ CrowdMeshPass::CrowdMeshPass(gpu::Device& device, CrowdDescriptors::Mode mode, s
     desc.name = name;
     desc.layout = &mLayout;
     desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vertex}, {VK_SHADER_STAGE_FRAGMENT_BIT, fragment}};
-    // Binding 0: the mesh (CharacterVertex); binding 1: the list's entries,
-    // one per instance.
-    desc.vertexBindings = {{0, sizeof(shader::CharacterVertex), VK_VERTEX_INPUT_RATE_VERTEX},
-                           {1, sizeof(shader::CrowdListEntry), VK_VERTEX_INPUT_RATE_INSTANCE}};
-    desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, positionU)},
-                             {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, normalV)},
-                             {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, tangent)},
-                             {3, 0, VK_FORMAT_R32G32B32A32_UINT, offsetof(shader::CharacterVertex, joints)},
-                             {4, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, weights)},
-                             {5, 1, VK_FORMAT_R32G32B32A32_UINT, 0}};
+    // The list's entries, one per instance: the only stream (vertices come
+    // from the baked vertex animation by index).
+    desc.vertexBindings = {{0, sizeof(shader::CrowdListEntry), VK_VERTEX_INPUT_RATE_INSTANCE}};
+    desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32A32_UINT, 0}};
     // Back faces culled: the meshes' own glTF counter-clockwise triangles,
     // which Camera's Y-flipped projection keeps counter-clockwise in
     // Vulkan's y-down framebuffer. (The tessellated near tier winds as the
@@ -46,9 +38,9 @@ void CrowdMeshPass::record(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescr
     for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
         gpu::PassScope pass(frame, kPassNames[tier - TS_LOD_MIDDLE]);
-        const VkBuffer streams[2] = {crowd.vertices().handle(), crowd.lists().handle()};
-        const VkDeviceSize offsets[2] = {0, 0};
-        vkCmdBindVertexBuffers(cmd, 0, 2, streams, offsets);
+        const VkBuffer entries = crowd.lists().handle();
+        const VkDeviceSize zero = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, &entries, &zero);
         vkCmdBindIndexBuffer(cmd, crowd.indices().handle(), 0, VK_INDEX_TYPE_UINT32);
         for (uint32_t c = 0; c < creatures; ++c) {
             const auto writes = descriptors.writes(c);

@@ -10,10 +10,9 @@ namespace tessera::backends {
 
 EmulatedCrowdNearPass::EmulatedCrowdNearPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat,
                                              const std::string& backendName)
-    : mDevice(&device),
-      mLayout(CrowdDescriptors::layout(device, CrowdDescriptors::Mode::Texels,
-                                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
-                                       backendName + ".crowd.near.layout")) {
+    : mDevice(&device), mLayout(CrowdDescriptors::layout(device, CrowdDescriptors::Mode::Texels,
+                                                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                                                         backendName + ".crowd.near.layout")) {
     gpu::GraphicsPipelineDesc desc;
     desc.name = backendName + ".crowd.near";
     desc.layout = &mLayout;

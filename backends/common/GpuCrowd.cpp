@@ -2,6 +2,7 @@
 
 #include "tessera/backend/CrowdChecks.h"
 #include "tessera/character/BakedAnimation.h"
+#include "tessera/character/BakedVertices.h"
 #include "tessera/tessellator/TrianglePatternLibrary.h"
 
 #include <algorithm>
@@ -9,9 +10,9 @@
 
 namespace tessera::backends {
 
-Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(
-    gpu::Device& device, const backend::CrowdDesc& desc,
-    const std::function<GpuCharacter*(backend::CharacterHandle)>& find, VkBufferUsageFlags writeUsage) {
+Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const backend::CrowdDesc& desc,
+                                                   const std::function<GpuCharacter*(backend::CharacterHandle)>& find,
+                                                   VkBufferUsageFlags writeUsage) {
     if (Status ok = backend::checkCrowdDesc(desc); !ok) return ok.error();
     const character::BakedAnimation& baked = *desc.animation;
     const uint32_t texelLimit = device.properties().limits.maxTexelBufferElements;
@@ -64,6 +65,29 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(
         crowd->mTriangleStride = std::max(crowd->mTriangleStride, creature.cageTriangles);
     }
 
+    // The middle and far tiers' baked vertex animation: each creature's
+    // cage and far mesh skinned at every baked frame of its clips, packed
+    // with its character's box and uv range (the GPU unpacks with them).
+    std::vector<glm::uvec4> bakedVertices;
+    std::vector<glm::uvec4> clipMeshes(baked.clips.size(), glm::uvec4(0));
+    for (size_t i = 0; i < desc.characters.size(); ++i) {
+        const GpuCharacter& k = *crowd->mCreatures[i].character;
+        const character::PackingRange range{k.boxMin(), k.boxMax(), glm::vec2(k.uvRange()),
+                                            glm::vec2(k.uvRange().z, k.uvRange().w)};
+        const uint32_t first = baked.characterClipBase[i];
+        const uint32_t end =
+            i + 1 < desc.characters.size() ? baked.characterClipBase[i + 1] : uint32_t(baked.clips.size());
+        const auto cage =
+            character::appendBakedVertices(*desc.characters[i].cage, baked, first, end, range, bakedVertices);
+        const auto far =
+            character::appendBakedVertices(*desc.characters[i].farMesh, baked, first, end, range, bakedVertices);
+        for (uint32_t c = first; c < end; ++c) clipMeshes[c] = glm::uvec4(cage[c - first], far[c - first], 0u, 0u);
+        crowd->mFarVertices.push_back(uint32_t(desc.characters[i].farMesh->vertices.size()));
+    }
+    if (bakedVertices.size() > texelLimit)
+        return Error{"createCrowd: the baked vertex animation needs " + std::to_string(bakedVertices.size()) +
+                     " texels, more than this device's maxTexelBufferElements (" + std::to_string(texelLimit) + ")"};
+
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags texels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
     const VkBufferUsageFlags dst = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
@@ -77,8 +101,8 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(
     crowd->mIndices = gpu::Buffer(device, indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | texels,
                                   gpu::MemoryUsage::GpuOnly, "crowd.indices");
     crowd->mIndices.upload(std::span<const uint32_t>(indices));
-    crowd->mIndicesView = gpu::BufferView(device, crowd->mIndices, VK_FORMAT_R32_UINT, 0, whole(crowd->mIndices),
-                                          "crowd.indices.texels");
+    crowd->mIndicesView =
+        gpu::BufferView(device, crowd->mIndices, VK_FORMAT_R32_UINT, 0, whole(crowd->mIndices), "crowd.indices.texels");
     crowd->mBaked = gpu::Buffer(device, baked.rows.size() * sizeof(glm::vec4), texels, gpu::MemoryUsage::GpuOnly,
                                 "crowd.bakedMatrices");
     crowd->mBaked.upload(std::span<const glm::vec4>(baked.rows));
@@ -91,11 +115,12 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(
                                         "crowd.clips.texels");
     crowd->mState = gpu::Buffer(device, VkDeviceSize(desc.maxIds) * sizeof(uint32_t), storage | dst,
                                 gpu::MemoryUsage::GpuOnly, "crowd.lodState");
-    crowd->mLists = gpu::Buffer(device, VkDeviceSize(TS_CROWD_LISTS) * desc.maxInstances * sizeof(shader::CrowdListEntry),
-                                written | vertex, gpu::MemoryUsage::GpuOnly, "crowd.tierLists");
-    crowd->mArgs = gpu::Buffer(device, TS_CROWD_ARG_WORDS * sizeof(uint32_t),
-                               written | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
-                               "crowd.indirect");
+    crowd->mLists =
+        gpu::Buffer(device, VkDeviceSize(TS_CROWD_LISTS) * desc.maxInstances * sizeof(shader::CrowdListEntry),
+                    written | vertex, gpu::MemoryUsage::GpuOnly, "crowd.tierLists");
+    crowd->mArgs =
+        gpu::Buffer(device, TS_CROWD_ARG_WORDS * sizeof(uint32_t), written | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                    gpu::MemoryUsage::GpuOnly, "crowd.indirect");
     crowd->mNear = gpu::Buffer(device, VkDeviceSize(crowd->mNearSlots) * crowd->mNearStride * 16, written | texels,
                                gpu::MemoryUsage::GpuOnly, "crowd.nearCages");
     crowd->mNearView = gpu::BufferView(device, crowd->mNear, VK_FORMAT_R32G32B32A32_UINT, 0, whole(crowd->mNear),
@@ -106,33 +131,46 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(
                                           written | texels, gpu::MemoryUsage::GpuOnly, "crowd.nearSlotRecords");
     crowd->mNearSlotsView = gpu::BufferView(device, crowd->mNearSlotRecords, VK_FORMAT_R32G32B32A32_UINT, 0,
                                             whole(crowd->mNearSlotRecords), "crowd.nearSlotRecords.texels");
-    crowd->mNearCommands =
-        gpu::Buffer(device,
-                    VkDeviceSize(crowd->mCreatures.size()) * crowd->mNearSlots * TS_CROWD_NEAR_COMMAND_WORDS *
-                        sizeof(uint32_t),
-                    written | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly, "crowd.nearCommands");
+    crowd->mNearCommands = gpu::Buffer(
+        device,
+        VkDeviceSize(crowd->mCreatures.size()) * crowd->mNearSlots * TS_CROWD_NEAR_COMMAND_WORDS * sizeof(uint32_t),
+        written | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly, "crowd.nearCommands");
+    crowd->mBakedVertices = gpu::Buffer(device, bakedVertices.size() * sizeof(glm::uvec4), texels,
+                                        gpu::MemoryUsage::GpuOnly, "crowd.bakedVertices");
+    crowd->mBakedVertices.upload(std::span<const glm::uvec4>(bakedVertices));
+    crowd->mBakedVerticesView = gpu::BufferView(device, crowd->mBakedVertices, VK_FORMAT_R32G32B32A32_UINT, 0,
+                                                whole(crowd->mBakedVertices), "crowd.bakedVertices.texels");
+    crowd->mClipMeshes = gpu::Buffer(device, clipMeshes.size() * sizeof(glm::uvec4), texels, gpu::MemoryUsage::GpuOnly,
+                                     "crowd.clipMeshes");
+    crowd->mClipMeshes.upload(std::span<const glm::uvec4>(clipMeshes));
+    crowd->mClipMeshesView = gpu::BufferView(device, crowd->mClipMeshes, VK_FORMAT_R32G32B32A32_UINT, 0,
+                                             whole(crowd->mClipMeshes), "crowd.clipMeshes.texels");
     const tessellator::TrianglePatternLibrary& patterns = tessellator::TrianglePatternLibrary::fractionalOdd();
-    crowd->mPatternCodes = gpu::Buffer(device, patterns.codes().size_bytes(), vertex, gpu::MemoryUsage::GpuOnly,
-                                       "crowd.nearPatternCodes");
+    crowd->mPatternCodes =
+        gpu::Buffer(device, patterns.codes().size_bytes(), vertex, gpu::MemoryUsage::GpuOnly, "crowd.nearPatternCodes");
     crowd->mPatternCodes.upload(patterns.codes());
     crowd->mPatternIndices = gpu::Buffer(device, patterns.indices().size_bytes(), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
                                          gpu::MemoryUsage::GpuOnly, "crowd.nearPatternIndices");
     crowd->mPatternIndices.upload(patterns.indices());
     for (uint32_t slot = 0; slot < gpu::kFramesInFlight; ++slot) {
-        const std::string tag = "[" + std::to_string(slot) + "]";
+        // (Built in steps: GCC 12 warns falsely on "[" + to_string + "]".)
+        std::string tag = "[";
+        tag += std::to_string(slot);
+        tag += ']';
         crowd->mInstances[slot] = gpu::Buffer(device, VkDeviceSize(desc.maxInstances) * sizeof(shader::CrowdInstance),
                                               storage | texels, gpu::MemoryUsage::CpuToGpu, "crowd.instances" + tag);
-        crowd->mInstancesView[slot] =
-            gpu::BufferView(device, crowd->mInstances[slot], VK_FORMAT_R32G32B32A32_UINT, 0,
-                            whole(crowd->mInstances[slot]), "crowd.instances.texels" + tag);
+        crowd->mInstancesView[slot] = gpu::BufferView(device, crowd->mInstances[slot], VK_FORMAT_R32G32B32A32_UINT, 0,
+                                                      whole(crowd->mInstances[slot]), "crowd.instances.texels" + tag);
         crowd->mArgsReadback[slot] = gpu::Buffer(device, TS_CROWD_ARG_WORDS * sizeof(uint32_t), dst,
                                                  gpu::MemoryUsage::GpuToCpu, "crowd.indirectReadback" + tag);
     }
 
     // Each list draws its creature's mesh: the cage (near, middle) or the
-    // far mesh; firstInstance is the list's region, so gl_InstanceIndex is
-    // the entry. The near tier fetches compressed vertices by local index
-    // (vertexOffset 0); the others read the vertex buffer at vertexOffset.
+    // far mesh; firstInstance is the list's region, so the instance stream
+    // (or gl_InstanceIndex) is the entry. Indices stay local to the mesh
+    // (vertexOffset 0): every tier fetches its vertices by local index, the
+    // near tier from its compressed cage, the others from the baked vertex
+    // animation.
     std::vector<uint32_t>& args = crowd->mInitialArgs;
     args.assign(TS_CROWD_ARG_WORDS, 0u);
     for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier)
@@ -143,7 +181,7 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(
             cmd[0] = 3 * (far ? k.farTriangles : k.cageTriangles);
             cmd[1] = 0;
             cmd[2] = far ? k.farFirstIndex : k.cageFirstIndex;
-            cmd[3] = tier == TS_LOD_NEAR ? 0 : (far ? k.farFirstVertex : k.cageFirstVertex);
+            cmd[3] = 0;
             cmd[4] = shader::tsCrowdListBase(tier, c, desc.maxInstances);
         }
     args[TS_CROWD_ARG_DISPATCH + 1] = 1;
@@ -197,7 +235,7 @@ shader::CrowdUniforms GpuCrowd::uniforms(const backend::CrowdDrawInfo& draw, uin
         out.uvRange = k.uvRange();
         out.displacement = glm::vec4(k.displacementScale(), k.displacementBias(), 1.0f, 0.0f);
         const Creature& m = mCreatures[c];
-        out.mesh = glm::uvec4(m.cageFirstVertex, k.vertexCount(), m.farFirstVertex, 0u);
+        out.mesh = glm::uvec4(m.cageFirstVertex, k.vertexCount(), m.farFirstVertex, mFarVertices[c]);
         out.indices = glm::uvec4(m.cageFirstIndex, m.cageTriangles, m.farFirstIndex, m.farTriangles);
     }
     const auto classes = tessellator::TrianglePatternLibrary::fractionalOdd().classes();
@@ -211,8 +249,9 @@ shader::CrowdUniforms GpuCrowd::uniforms(const backend::CrowdDrawInfo& draw, uin
 
 uint64_t GpuCrowd::bytes() const {
     uint64_t total = mVertices.size() + mIndices.size() + mBaked.size() + mClips.size() + mState.size() +
-                     mLists.size() + mArgs.size() + mNear.size() + mNearOwners.size() + mNearSlotRecords.size() +
-                     mNearCommands.size() + mPatternCodes.size() + mPatternIndices.size();
+                     mBakedVertices.size() + mClipMeshes.size() + mLists.size() + mArgs.size() + mNear.size() +
+                     mNearOwners.size() + mNearSlotRecords.size() + mNearCommands.size() + mPatternCodes.size() +
+                     mPatternIndices.size();
     for (const gpu::Buffer& b : mInstances) total += b.size();
     return total;
 }

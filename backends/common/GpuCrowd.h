@@ -71,6 +71,9 @@ public:
     gpu::Buffer& patternIndices() { return mPatternIndices; }
     /// Texel views for the emulated backends' shaders.
     VkBufferView indicesView() const { return mIndicesView.handle(); }
+    /// The middle and far tiers' baked vertex animation and its per-clip table.
+    VkBufferView bakedVerticesView() const { return mBakedVerticesView.handle(); }
+    VkBufferView clipMeshesView() const { return mClipMeshesView.handle(); }
     VkBufferView clipsView() const { return mClipsView.handle(); }
     VkBufferView nearCagesView() const { return mNearView.handle(); }
     VkBufferView nearSlotsView() const { return mNearSlotsView.handle(); }
@@ -115,9 +118,11 @@ private:
     std::vector<Creature> mCreatures;
     std::vector<float> mLevelPerPixel;
     uint32_t mMaxInstances = 0, mMaxIds = 0, mNearSlots = 0, mNearStride = 0, mClipCount = 0, mTriangleStride = 0;
+    std::vector<uint32_t> mFarVertices; ///< per creature
     gpu::Buffer mVertices, mIndices, mBaked, mClips, mState, mLists, mArgs, mNear, mNearOwners;
-    gpu::Buffer mNearSlotRecords, mNearCommands, mPatternCodes, mPatternIndices;
-    gpu::BufferView mBakedView, mIndicesView, mClipsView, mNearView, mNearSlotsView;
+    gpu::Buffer mNearSlotRecords, mNearCommands, mPatternCodes, mPatternIndices, mBakedVertices, mClipMeshes;
+    gpu::BufferView mBakedView, mIndicesView, mClipsView, mNearView, mNearSlotsView, mBakedVerticesView,
+        mClipMeshesView;
     std::array<gpu::Buffer, gpu::kFramesInFlight> mInstances;
     std::array<gpu::BufferView, gpu::kFramesInFlight> mInstancesView;
     std::array<std::vector<glm::uvec2>, gpu::kFramesInFlight> mRanges;

@@ -15,9 +15,9 @@ uint32_t listCount(const uint32_t* args, uint32_t tier, uint32_t creature) {
 
 } // namespace
 
-Result<backend::CrowdHandle> GpuCrowdSet::create(
-    const backend::CrowdDesc& desc, const std::function<GpuCharacter*(backend::CharacterHandle)>& find,
-    VkBufferUsageFlags writeUsage) {
+Result<backend::CrowdHandle> GpuCrowdSet::create(const backend::CrowdDesc& desc,
+                                                 const std::function<GpuCharacter*(backend::CharacterHandle)>& find,
+                                                 VkBufferUsageFlags writeUsage) {
     if (!mDevice) return Error{"createCrowd before initialize"};
     auto created = GpuCrowd::create(*mDevice, desc, find, writeUsage);
     if (!created) return created.error();

@@ -110,6 +110,7 @@ public:
         mCrowdPass.recordDraws(*mFrame, *crowd, descriptors);
         mReport.passes += 2 + TS_LOD_TIERS;
         mReport.intermediateBytes += crowd->bytes();
+        mReport.crowdBytes += crowd->bytes();
     }
 
     Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle handle) override {

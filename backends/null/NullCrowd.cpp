@@ -1,8 +1,6 @@
 #include "NullCrowd.h"
 
 #include "tessera/backend/CrowdChecks.h"
-#include "tessera/tessellator/ContinuousLevel.h"
-#include "tessera/tessellator/Tessellator.h"
 
 namespace tessera::backends {
 
@@ -27,16 +25,9 @@ backend::CrowdTierCounts NullCrowd::draw(const backend::CrowdDrawInfo& draw) {
         auto add = [&](uint32_t t) {
             mTiers.instances[t].push_back(i);
             ++counts.instances[t];
-            if (t == TS_LOD_NEAR) {
-                const float level =
-                    shader::tsLodLevel(shader::tsLodPixels(instance.sphere, p), creature.levelPerPixel, p);
-                counts.triangles[t] += uint64_t(creature.cageTriangles) *
-                                       tessellator::Tessellator::countTriangles(
-                                           tessellator::Domain::Triangle, tessellator::Partitioning::FractionalOdd,
-                                           tessellator::ContinuousLevel::factors(level));
-            } else {
-                counts.triangles[t] += t == TS_LOD_MIDDLE ? creature.cageTriangles : creature.farTriangles;
-            }
+            // Before tessellation, as the GPU backends count them (the near
+            // tier's cage; tessellation's output is the pass's statistics).
+            counts.triangles[t] += t == TS_LOD_FAR ? creature.farTriangles : creature.cageTriangles;
         };
         add(tier);
         if (shader::tsLodStateFade(state) > 0u) add(shader::tsLodStatePrevious(state));

@@ -31,7 +31,9 @@ TierRun runTiers(const std::string& backend, const std::string& name, const std:
     std::filesystem::remove(json);
     std::vector<std::string> args = {"--scene",  "crowd", "--backend",    backend, "--heightmap", smallCrowdTerrain(),
                                      "--frames", "12",    "--width",      "480",   "--height",    "270",
-                                     "--validation", "--crowd-tiers", json};
+                                     "--validation", "--crowd-tiers", json,
+                                     // Thresholds for the small frame, so every tier is seen.
+                                     "--lod-near", "64", "--lod-far", "24"};
     args.insert(args.end(), view.begin(), view.end());
     TierRun run;
     run.command = demoCommandLine(args);

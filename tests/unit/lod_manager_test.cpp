@@ -53,8 +53,18 @@ uint32_t tierOf(const lod::LodFrame& frame, uint32_t instance) {
     return TS_LOD_NONE;
 }
 
-LodPolicy noFade() {
+/// The policy these tests were written for (the thresholds and edge of
+/// their expected tiers and levels), whatever the shipped defaults are.
+LodPolicy testPolicy() {
     LodPolicy policy;
+    policy.nearPixels = 128.0f;
+    policy.farPixels = 40.0f;
+    policy.targetEdgePixels = 1.0f;
+    return policy;
+}
+
+LodPolicy noFade() {
+    LodPolicy policy = testPolicy();
     policy.fadeFrames = 0;
     return policy;
 }
@@ -90,7 +100,7 @@ TEST(LodManager, HysteresisKeepsAnOscillatingInstanceInOneTier) {
     const auto characters = creature();
     uint32_t changes = 0, last = TS_LOD_NONE;
     for (int frame = 0; frame < 600; ++frame) {
-        const float pixels = 128.0f * (1.0f + 0.05f * std::sin(float(frame) * 0.1f));
+        const float pixels = testPolicy().nearPixels * (1.0f + 0.05f * std::sin(float(frame) * 0.1f));
         const LodInstance instance = at(distanceFor(pixels), 7);
         const uint32_t tier = tierOf(lods.update({&instance, 1}, characters, view()), 0);
         if (last != TS_LOD_NONE && tier != last) ++changes;
@@ -104,7 +114,7 @@ TEST(LodManager, HysteresisKeepsAnOscillatingInstanceInOneTier) {
     uint32_t flips = 0;
     last = TS_LOD_NONE;
     for (int frame = 0; frame < 600; ++frame) {
-        const float pixels = 128.0f * (1.0f + 0.05f * std::sin(float(frame) * 0.1f));
+        const float pixels = testPolicy().nearPixels * (1.0f + 0.05f * std::sin(float(frame) * 0.1f));
         const LodInstance instance = at(distanceFor(pixels), 7);
         const uint32_t tier = tierOf(flicker.update({&instance, 1}, characters, view()), 0);
         if (last != TS_LOD_NONE && tier != last) ++flips;
@@ -114,7 +124,7 @@ TEST(LodManager, HysteresisKeepsAnOscillatingInstanceInOneTier) {
 }
 
 TEST(LodManager, ATierChangeCrossFadesOverTheFadeFrames) {
-    LodPolicy policy;
+    LodPolicy policy = testPolicy();
     policy.fadeFrames = 8;
     LodManager lods(policy, 1);
     const auto characters = creature();
@@ -142,7 +152,7 @@ TEST(LodManager, ATierChangeCrossFadesOverTheFadeFrames) {
 }
 
 TEST(LodManager, ComingIntoViewDoesNotFade) {
-    LodManager lods(LodPolicy{}, 1);
+    LodManager lods(testPolicy(), 1);
     const auto characters = creature();
     LodInstance instance = at(-10.0f, 1);
     lods.update({&instance, 1}, characters, view());
@@ -154,7 +164,7 @@ TEST(LodManager, ComingIntoViewDoesNotFade) {
 }
 
 TEST(LodManager, TheBudgetCapsNearInstancesAndTessellatedTriangles) {
-    LodPolicy policy;
+    LodPolicy policy = testPolicy();
     policy.budget.maxNearInstances = 3;
     policy.budget.maxTessellatedTriangles = 2'000'000;
     LodManager lods(policy, 1);
@@ -265,7 +275,7 @@ TEST(LodManager, SameAnswerOnAnyThreadCount) {
     for (uint32_t i = 0; i < 20000; ++i)
         instances.push_back({glm::vec4(random.range(-100.0f, 100.0f), 0.0f, random.range(-200.0f, 0.0f), kRadius),
                              i, 0});
-    LodManager one(LodPolicy{}, 1), four(LodPolicy{}, 4);
+    LodManager one(testPolicy(), 1), four(testPolicy(), 4);
     const lod::LodFrame& a = one.update(instances, characters, view());
     const lod::LodFrame& b = four.update(instances, characters, view());
     for (uint32_t t = 0; t < lod::kTierCount; ++t) {
@@ -275,7 +285,7 @@ TEST(LodManager, SameAnswerOnAnyThreadCount) {
 }
 
 TEST(LodPolicy, BadSettingsAreRefusedWithAMessage) {
-    LodPolicy policy;
+    LodPolicy policy = testPolicy();
     EXPECT_TRUE(policy.validate().ok());
     policy.budget.maxTessellatedTriangles = 0;
     ASSERT_FALSE(policy.validate().ok());

@@ -25,7 +25,8 @@ layout(location = 0) out vec3 outWorld;
 layout(location = 1) out vec3 outNormal;
 layout(location = 2) out vec3 outTangent;
 layout(location = 3) out vec2 outUv;
-layout(location = 4) flat out uvec4 outEntry;
+layout(location = 4) flat out vec4 outCrowdLod;
+layout(location = 5) flat out vec4 outCrowdShade;
 
 CageSample corner(uint slot, uint index) {
     return tsDecompressCageSample(texelFetch(uNearCages, int(slot * uCrowd.flags.z + index)));
@@ -54,6 +55,7 @@ void main() {
     outNormal = p.normal;
     outTangent = p.tangent;
     outUv = p.uv;
-    outEntry = tsCrowdEntryBits(entry);
+    outCrowdLod = tsCrowdFragmentLod();
+    outCrowdShade = tsCrowdFragmentShade();
     gl_Position = frame.viewProjection * vec4(p.world, 1.0);
 }

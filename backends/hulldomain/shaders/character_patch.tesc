@@ -26,17 +26,20 @@ layout(location = 4) in uvec4 inEntry[]; // CrowdListEntry
 // point (the domain stage reads no crowd buffer).
 layout(location = 5) patch out vec4 outWorld[4];
 layout(location = 9) patch out vec4 outDisplacement;
-layout(location = 10) patch out uvec4 outEntry;
+layout(location = 10) patch out vec4 outCrowdLod;
+layout(location = 11) patch out vec4 outCrowdShade;
 #endif
 
 void main() {
 #ifdef TS_CROWD
-    // The instance's own level (its size on screen, within the frame's cap).
-    tsCrowdSelect(tsCrowdEntry(inEntry[0]));
+    // The instance's own level (its size on screen, within the frame's
+    // cap): selected once per patch, by the invocation that sets the levels.
     if (gl_InvocationID == 0) {
+        tsCrowdSelect(tsCrowdEntry(inEntry[0]));
         for (int c = 0; c < 4; ++c) outWorld[c] = uCharacter.world[c];
         outDisplacement = uCharacter.displacement;
-        outEntry = inEntry[0];
+        outCrowdLod = tsCrowdFragmentLod();
+        outCrowdShade = tsCrowdFragmentShade();
     }
 #endif
 #ifdef TS_SINGLE_PASS

@@ -23,8 +23,10 @@ layout(location = 3) in vec2 inUv[];
 #ifdef TS_CROWD
 layout(location = 5) patch in vec4 inWorld[4];
 layout(location = 9) patch in vec4 inDisplacement;
-layout(location = 10) patch in uvec4 inEntry;
-layout(location = 4) flat out uvec4 outEntry;
+layout(location = 10) patch in vec4 inCrowdLod;
+layout(location = 11) patch in vec4 inCrowdShade;
+layout(location = 4) flat out vec4 outCrowdLod;
+layout(location = 5) flat out vec4 outCrowdShade;
 #endif
 
 layout(location = 0) out vec3 outWorld;
@@ -56,7 +58,8 @@ void main() {
     uCharacter.world = mat4(inWorld[0], inWorld[1], inWorld[2], inWorld[3]);
     uCharacter.worldNormal = uCharacter.world / dot(inWorld[0].xyz, inWorld[0].xyz);
     uCharacter.displacement = inDisplacement;
-    outEntry = inEntry;
+    outCrowdLod = inCrowdLod;
+    outCrowdShade = inCrowdShade;
 #endif
     CharacterPoint p = tsEvaluateCharacter(bary, corner(0), corner(1), corner(2));
     outWorld = p.world;

@@ -22,7 +22,12 @@ void main() {
     // firstInstance is the list's base: gl_InstanceIndex is the entry.
     uint entryIndex = uint(gl_InstanceIndex);
     CrowdListEntry entry = crowdLists[entryIndex];
-    tsCrowdSelect(entry);
+    // Decompressing needs only the creature's box and uv range; the hull
+    // stage selects the rest once per patch.
+    CrowdCharacter c = uCrowd.characters[min(tsCrowdInstance(entry.instance).ids.y, TS_CROWD_MAX_CHARACTERS - 1u)];
+    uCharacter.boxMin = c.boxMin;
+    uCharacter.boxMax = c.boxMax;
+    uCharacter.uvRange = c.uvRange;
     CageSample s = tsDecompressCageSample(nearCages[entry.slot * uCrowd.flags.z + uint(gl_VertexIndex)]);
     outPosition = s.position;
     outNormal = s.normal;

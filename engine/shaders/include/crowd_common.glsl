@@ -118,6 +118,26 @@ float tsCrowdNearLevel(CrowdInstance instance) {
     return tsLodLevel(tsLodPixels(instance.sphere, uCrowd.lod), c.boxMin.w, uCrowd.lod);
 }
 
+// What a crowd draw's fragment shader needs of its instance, handed on flat
+// by the vertex (or evaluation) stage so that fragments read no crowd
+// buffer: lod = uCharacter.lod (coverage, fading out, tier, tint by tier);
+// shade = (the instance's tint, normal map + 2 * negative handedness).
+vec4 tsCrowdFragmentLod() {
+    return uCharacter.lod;
+}
+
+vec4 tsCrowdFragmentShade() {
+    return vec4(gCrowdTint, (uCharacter.displacement.w > 0.5 ? 1.0 : 0.0) + (uCharacter.counts.w != 0u ? 2.0 : 0.0));
+}
+
+// The fragment stage's side of the two above.
+void tsCrowdFragmentSelect(vec4 lod, vec4 shade) {
+    uCharacter.lod = lod;
+    uCharacter.displacement.w = mod(shade.w, 2.0);
+    uCharacter.counts.w = shade.w >= 2.0 ? 1u : 0u;
+    gCrowdTint = shade.rgb;
+}
+
 // Makes list entry `entry` the instance drawn, its near level from its size.
 void tsCrowdSelect(CrowdListEntry entry) {
     tsCrowdSelectAtLevel(entry, tsCrowdNearLevel(tsCrowdInstance(entry.instance)));

@@ -151,6 +151,12 @@ TS_NAMESPACE_END
 /// The crowd's index buffer as an R32UI texel buffer (the emulated near
 /// tier fetches a cage triangle's corners by instance).
 #define TS_BINDING_CROWD_INDICES 20
+/// The middle and far tiers' baked vertex animation (character::
+/// appendBakedVertices): RGBA32UI texels, one 128-bit vertex per mesh
+/// vertex per baked frame; and per global baked clip one RGBA32UI texel:
+/// x = the cage's first texel, y = the far mesh's first texel.
+#define TS_BINDING_CROWD_BAKED_VERTICES 21
+#define TS_BINDING_CROWD_CLIP_MESHES 22
 
 /// The indirect buffer (uint words): per list an indexed draw command
 /// (5 words: indexCount, instanceCount, firstIndex, vertexOffset,

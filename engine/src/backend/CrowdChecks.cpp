@@ -22,7 +22,11 @@ Status checkCrowdDesc(const CrowdDesc& desc) {
         const CrowdCharacterDesc& c = desc.characters[i];
         const std::string name = "character " + std::to_string(i);
         if (!c.character.valid()) return bad(name + " has no character handle");
+        if (!c.cage || c.cage->triangleCount() == 0) return bad(name + " has no cage");
         if (!c.farMesh || c.farMesh->triangleCount() == 0) return bad(name + " has no far mesh");
+        if (c.farMesh->bindings.size() != c.cage->bindings.size())
+            return bad(name + ": its far mesh has " + std::to_string(c.farMesh->bindings.size()) +
+                       " skinning matrices, its cage " + std::to_string(c.cage->bindings.size()));
         if (!(c.levelPerPixel > 0.0f) || !std::isfinite(c.levelPerPixel))
             return bad(name + ": levels per pixel must be a positive number");
     }

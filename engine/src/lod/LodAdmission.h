@@ -30,10 +30,12 @@ struct Admission {
     bool fits = true;      ///< false: even admitting nobody, the copies exceed a limit
 };
 
-/// Sorts `items` by size (largest first, ties by id) and admits the largest
-/// prefix whose cost and count, with the copies the rejected ones and
+/// Admits the largest prefix of `items` by size (largest first, ties by id)
+/// whose cost and count, with the copies the rejected ones and
 /// `forcedCost`/`forcedCount` (copies of instances that are not candidates)
 /// add, stay within `limits`. Never splits equal sizes (a cut could not).
+/// Reorders `items` so the admitted ones come first; when all fit, leaves
+/// the order alone (cut 0).
 Admission admit(std::vector<AdmissionItem>& items, uint64_t forcedCost, uint64_t forcedCount,
                 const AdmissionLimits& limits, bool demotionsFade);
 

@@ -29,8 +29,11 @@ using CrowdHandle = Handle<CrowdTag>;
 struct CrowdCharacterDesc {
     /// The character made with createCharacter: its cage, maps and box.
     CharacterHandle character;
-    /// Its far mesh (character::CharacterAsset::farMesh; same bindings as the
-    /// cage). Must outlive createCrowd only.
+    /// Its cage (character::CharacterAsset::cage, as given to
+    /// createCharacter) and far mesh (character::CharacterAsset::farMesh;
+    /// same bindings as the cage), for the middle and far tiers' baked
+    /// vertex animation. Must outlive createCrowd only.
+    const character::CageMesh* cage = nullptr;
     const character::CageMesh* farMesh = nullptr;
     /// Near-tier levels per projected pixel (lod::LodCharacter::levelPerPixel).
     float levelPerPixel = 0.01f;

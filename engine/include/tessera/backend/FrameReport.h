@@ -21,10 +21,17 @@ struct FrameReport {
     /// Triangles the backend submitted (before clipping), as it computes them.
     uint64_t trianglesSubmitted = 0;
     /// Crowd instances drawn per LOD tier (near, middle, far; fading copies
-    /// included) and their triangles, as the GPU's lists counted them (a
-    /// backend reads its counters back when the frame completes).
+    /// included) and their triangles before tessellation (the near tier's
+    /// cage triangles; what tessellation made of them is in the pass's
+    /// pipeline statistics), as the GPU's lists counted them: a backend
+    /// reads its counters back when the frame slot comes round again, so
+    /// they describe an earlier frame of the same crowd.
     uint32_t crowdInstances[3] = {0, 0, 0};
     uint64_t crowdTriangles[3] = {0, 0, 0};
+    /// Device bytes of the crowds drawn this frame: meshes, clips, lists,
+    /// commands, near slots, per-frame instances and the technique's own
+    /// state and intermediate targets (also in intermediateBytes).
+    uint64_t crowdBytes = 0;
     uint32_t passes = 0;
     /// Bytes of the backend's intermediate buffers and render targets (cage,
     /// factors, records, commands, pattern library), for the backend comparison.

@@ -37,8 +37,8 @@ struct LodPolicy {
     /// An instance whose bounding sphere covers at least this many pixels
     /// on screen (its diameter) is tessellated; below `farPixels` it takes
     /// the far mesh; in between, the middle tier.
-    float nearPixels = 128.0f;
-    float farPixels = 40.0f;
+    float nearPixels = 192.0f;
+    float farPixels = 64.0f;
     /// An instance goes back to a coarser tier only this fraction below the
     /// threshold it crossed, so one on a boundary does not flicker.
     float hysteresis = 0.15f;
@@ -48,10 +48,13 @@ struct LodPolicy {
     /// A tessellated edge covers about this many pixels (the near tier's
     /// level follows the instance's size on screen, as the paper's per-draw
     /// level; fixedLevel overrides it).
-    float targetEdgePixels = 1.0f;
+    float targetEdgePixels = 2.0f;
     /// Forces every near instance's level (--character-level), for
     /// measurements; the triangle budget still caps it. 0: from the size.
     float fixedLevel = 0.0f;
+    /// The far tier's mesh: at most this many triangles (the content's far
+    /// mesh simplified further when it has more); 0 keeps the content's.
+    uint32_t farMeshTriangles = 120;
     LodBudget budget;
 
     /// The defaults for `device`: on a CPU rasterizer a handful of

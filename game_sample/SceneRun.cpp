@@ -1,0 +1,83 @@
+#include "SceneRun.h"
+
+#include "LodSettings.h"
+#include "tessera/core/Log.h"
+#include "tessera/profiler/CpuScope.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace tessera::demo {
+
+Result<std::unique_ptr<SceneRun>> SceneRun::create(const DemoOptions& options, uint32_t frames) {
+    std::unique_ptr<SceneRun> run(new SceneRun());
+    run->mOptions = options;
+    auto loaded = DemoScene::load(options, frames);
+    if (!loaded) return loaded.error();
+    run->mScene = std::move(loaded.value());
+    auto created = RenderSession::create(options, run->mScene->terrain());
+    if (!created) return created.error();
+    run->mSession = std::move(created.value());
+    RenderSession& session = *run->mSession;
+    auto settings = session.resolveTessellation(options);
+    if (!settings) return settings.error();
+    run->mSettings = settings.value();
+    log::info(std::string("terrain mode ") + terrain::toString(run->mSettings.mode) +
+              (run->mSettings.mode == terrain::TerrainMode::Adaptive
+                   ? std::string(", metric ") + terrain::toString(run->mSettings.metric)
+                   : std::string()));
+    session.setTerrainVisible(options.terrain);
+    auto policy = lodPolicyFor(options, session.deviceClass());
+    if (!policy) return policy.error();
+    run->mLodPolicy = policy.value();
+
+    CharacterPopulation* characters = run->mScene->characters();
+    if (characters) {
+        if (options.characterLevel && *options.characterLevel > session.maxCharacterLevel())
+            return fail("--character-level ", formatNumber(*options.characterLevel), ": backend ",
+                        session.capabilities().name, " tessellates up to level ",
+                        formatNumber(session.maxCharacterLevel()));
+        if (Status ok = session.createCharacters(characters->assets()); !ok) return ok.error();
+        // The crowd scene draws as one instanced crowd where the backend
+        // culls and bins crowds on the GPU, through the character path
+        // elsewhere.
+        InstancedCrowd* instanced = characters->instancedCrowd();
+        if (instanced && session.capabilities().crowd) {
+            const SimulatedCrowd* simulated = run->mScene->simulatedCrowd();
+            const uint32_t agents = simulated ? simulated->crowd().stats().agents : 0;
+            if (Status ok =
+                    session.createCrowd(instanced->desc(characters->assets(), std::max(agents, 1u), run->mLodPolicy));
+                !ok)
+                return ok.error();
+            characters->useInstancedCrowd();
+            run->mInstanced = instanced;
+        }
+    }
+    if (const SimulatedCrowd* simulated = run->mScene->simulatedCrowd())
+        std::printf("%s\n",
+                    simulated->drawingMode(session.capabilities().name, session.capabilities().requiresGpu).c_str());
+    return run;
+}
+
+void SceneRun::renderFrame(uint32_t frame, bool readback) {
+    RenderSession& session = *mSession;
+    {
+        TESSERA_CPU_SCOPE("scene.update");
+        mScene->update(frame);
+        mCamera.setPose(mScene->cameraPose(frame));
+        mCamera.setAspect(float(session.width()) / float(session.height()));
+    }
+    backend::CharacterDrawInfo draw;
+    backend::CrowdDrawInfo crowdDraw;
+    CharacterPopulation* characters = mScene->characters();
+    if (characters) {
+        characters->update(frame * DemoScene::kSecondsPerFrame, mCamera,
+                           {session.height(), session.maxCharacterLevel(), mOptions.characterLevel, mLodPolicy});
+        draw = {characters->items(), mOptions.characterPath, mOptions.displacement, mOptions.lodColors};
+        if (mInstanced) crowdDraw = mInstanced->drawInfo(mOptions.displacement, mOptions.lodColors);
+    }
+    session.renderFrame(frame, mCamera, mSettings, mOptions.clearColor, mOptions.wireframe, readback,
+                        characters ? &draw : nullptr, mInstanced ? &crowdDraw : nullptr);
+}
+
+} // namespace tessera::demo
