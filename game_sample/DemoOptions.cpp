@@ -102,7 +102,7 @@ by default, on the best Vulkan device (a GPU, else lavapipe).
 Backend and device:
   --backend NAME        r2vb | streamout | hulldomain | null (default: the
                         most capable backend the device can run); with
-                        --bench terrain or characters also "all": every GPU
+                        --bench terrain, characters or crowd also "all": every GPU
                         backend side by side
   --list-backends       list backends and their capabilities on the device
   --device NAME|INDEX   pick a Vulkan device by index or name substring
@@ -112,27 +112,29 @@ Backend and device:
                         every message, fail at exit if there were any
 
 Scene:
-  --scene NAME          terrain (the flythrough) | characters (a crowd of
-                        tessellated, displaced, animated creatures and
-                        CesiumMan walking on the terrain; the default when
-                        --model is given) | crowd (the crowd simulation:
-                        --agents agents wandering between four goals, the
-                        --crowd-draw nearest in view drawn as creatures; the
-                        default when --agents or --crowd-draw is given)
+  --scene NAME          crowd (the default: the crowd simulation, --agents
+                        agents wandering between four goals under a meteor
+                        shower, every one drawn as an instanced crowd culled
+                        and sorted into LOD tiers on the GPU, seen from a
+                        flight over it) | terrain (the flythrough over the
+                        terrain alone) | characters (a few tessellated,
+                        displaced, animated creatures and CesiumMan walking
+                        on the terrain; the default when --model is given)
   --model FILE          place a .gltf or .glb file in the characters scene,
                         playing its first animation (repeatable)
   --crowd N             generated creatures in the characters scene, with
                         CesiumMan (default 6; 0: only the --model files,
                         centred where the crowd would stand)
   --orbit-distance M    radius of the camera's circle around the characters
-                        (default 5 metres; 30 around the crowd's spawn)
+                        (default 5 metres); in the crowd scene, circle the
+                        crowd's spawn at M metres instead of flying over it
   --agents N            agents in the crowd scene (default 2000; refused
                         when more than the machine's memory holds); with
-                        --bench crowd-sim a comma list of crowd sizes
-                        (default 1000,10000,65000)
-  --crowd-draw K        how many agents the crowd scene draws, the nearest in
-                        view (default 48; each is one character draw until
-                        instanced crowd rendering lands)
+                        --bench crowd or crowd-sim a comma list of crowd
+                        sizes (default 1000,10000,65000)
+  --crowd-draw K        on a backend without instanced crowds, how many
+                        agents the crowd scene draws, the nearest in view,
+                        one character draw each (default 48)
   --threads N           the crowd simulation's threads (default 0: every
                         hardware thread)
   --no-displacement     draw characters without their displacement maps
@@ -171,7 +173,8 @@ Scene:
   --seed N              camera path, meteor and crowd spawn seed (default 1)
   --camera x,y,z,yaw,pitch  fixed view (degrees) instead of the flythrough
   --wireframe           draw wireframe
-  --meteors N           a meteor shower of N impacts during the flythrough,
+  --meteors N           a meteor shower of N impacts during the flythrough
+                        (the crowd scene: 4 unless given; 0 for none),
                         deterministic by --seed; craters deform the terrain
                         (in the crowd scene they land among the agents)
   --splat x,z,r[,depth] stamp a crater (metres) before the first frame
@@ -409,7 +412,10 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
             TESSERA_TAKE_NUMBER(tessellation.maxLevel, 1.0f, 64.0f)
             o.tessMaxGiven = true;
         }
-        else if (flag == "--meteors") TESSERA_TAKE_COUNT(meteors, 0, 10000)
+        else if (flag == "--meteors") {
+            TESSERA_TAKE_COUNT(meteors, 0, 10000)
+            o.meteorsGiven = true;
+        }
         else if (flag == "--splat") {
             TESSERA_TAKE(v);
             auto splat = parseSplat(v);
@@ -458,6 +464,10 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
     if (!o.models.empty() && !o.sceneGiven) o.scene = "characters";
     const bool crowdFlags = !o.agents.empty() || crowdDrawGiven;
     if (crowdFlags && !o.sceneGiven && o.bench.empty()) o.scene = "crowd";
+    // With no scene asked for, the showcase: the crowd on the adaptive
+    // terrain under a meteor shower, seen from a flight over it.
+    if (!o.sceneGiven && o.models.empty() && o.bench.empty()) o.scene = "crowd";
+    if (o.scene == "crowd" && o.bench.empty() && !o.meteorsGiven) o.meteors = kCrowdSceneMeteors;
     const bool crowdBench = o.bench == "crowd" || o.bench == "crowd-sim";
     if (crowdFlags && o.scene != "crowd" && !crowdBench)
         return fail(!o.agents.empty() ? "--agents" : "--crowd-draw",

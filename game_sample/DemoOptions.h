@@ -18,6 +18,9 @@
 
 namespace tessera::demo {
 
+/// Meteor impacts over a crowd-scene run when --meteors is not given.
+inline constexpr uint32_t kCrowdSceneMeteors = 4;
+
 struct DemoOptions {
     std::string backend;                ///< empty: best backend the device runs; "all" (--bench only): every GPU backend
     std::string device;                 ///< --device NAME|INDEX
@@ -56,14 +59,18 @@ struct DemoOptions {
     bool tessLevelGiven = false;
     bool tessTargetGiven = false;
     bool tessMetricGiven = false;
-    uint32_t meteors = 0;                         ///< --meteors N
+    uint32_t meteors = 0;                         ///< --meteors N (the crowd scene: kCrowdSceneMeteors unless given)
+    bool meteorsGiven = false;
     std::vector<terrain::CraterSplat> splats;     ///< --splat x,z,radius[,depth], before the first frame
 
-    /// --scene terrain|characters|crowd. "characters" (the default when
-    /// --model is given) walks a crowd of generated creatures, CesiumMan and
-    /// every --model on the terrain, with the camera circling them. "crowd"
-    /// (the default when --agents or --crowd-draw is given) simulates
-    /// --agents agents and draws the --crowd-draw nearest in view.
+    /// --scene terrain|characters|crowd. "terrain" is the flythrough over
+    /// the terrain alone. "characters" (the default when --model is given)
+    /// walks a crowd of generated creatures, CesiumMan and every --model on
+    /// the terrain, with the camera circling them. "crowd" (the default
+    /// otherwise, outside the benchmarks: the showcase) simulates --agents
+    /// agents under a meteor shower and draws them all as an instanced
+    /// crowd where the backend culls and bins crowds on the GPU, from a
+    /// flight over them (an orbit with --orbit-distance).
     std::string scene = "terrain";
     bool sceneGiven = false;
     std::vector<std::string> models;    ///< --model FILE (repeatable): any .gltf or .glb

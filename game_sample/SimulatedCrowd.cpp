@@ -33,6 +33,9 @@ constexpr float kOrbitClearance = 0.5f; // over ground rising under it: this sha
 // eye level plus a rise with the disc's size, so a large crowd's far side
 // stays in view over the near agents.
 constexpr float kAcrossMargin = 4.0f;
+// The flight over the crowd: metres above the ground and per second.
+constexpr float kFlightClearance = 9.0f;
+constexpr float kFlightSpeed = 6.0f;
 constexpr float kAcrossHeight = 2.5f;
 constexpr float kAcrossRise = 0.08f;
 constexpr float kLookHeight = 0.7f; // the camera aims this high above the spawn's centre
@@ -85,9 +88,25 @@ Result<std::unique_ptr<SimulatedCrowd>> SimulatedCrowd::create(const DemoOptions
                     height,
                     kLookHeight,
                     kOrbitClearance * height};
+    if (!options.orbitDistance) {
+        // A loop inside the spawn disc (CameraPath keeps its control points
+        // within 80% of the region's half-size), low and slow: the agents
+        // ahead and below fill the view, the nearest tessellated.
+        scene::CameraPathSettings flight;
+        flight.seed = options.seed;
+        flight.regionMin = centre - glm::vec2(self->mLayout.spawn.halfSize.x);
+        flight.regionMax = centre + glm::vec2(self->mLayout.spawn.halfSize.x);
+        flight.clearance = kFlightClearance;
+        flight.speed = kFlightSpeed;
+        self->mFlight.emplace(flight, [&terrain](float x, float z) { return terrain.heightAt(x, z); });
+    }
     std::printf("crowd: %u agents on %s\n", agents, describeLayout(self->mLayout).c_str());
     std::fflush(stdout);
     return self;
+}
+
+scene::CameraPose SimulatedCrowd::orbitPose(double seconds) const {
+    return mFlight ? mFlight->sample(seconds) : mOrbit.pose(*mTerrain, seconds);
 }
 
 scene::CameraPose SimulatedCrowd::acrossPose() const {

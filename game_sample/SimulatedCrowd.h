@@ -13,10 +13,12 @@
 #include "DemoOptions.h"
 #include "tessera/core/Result.h"
 #include "tessera/crowd/Crowd.h"
+#include "tessera/scene/CameraPath.h"
 #include "tessera/crowd/CrowdLayout.h"
 #include "tessera/terrain/Terrain.h"
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -58,7 +60,10 @@ public:
     std::span<const backend::CharacterDrawItem> items() const override { return mPoser.items(); }
     /// Circling the spawn's centre (--orbit-distance, default 30 m), high
     /// enough to look over the agents.
-    scene::CameraPose orbitPose(double seconds) const override { return mOrbit.pose(*mTerrain, seconds); }
+    /// The scene's camera: a flight over the crowd (a seeded loop inside
+    /// the spawn disc, low enough that the nearest agents are tessellated),
+    /// or with --orbit-distance a circle around the spawn's centre.
+    scene::CameraPose orbitPose(double seconds) const override;
     /// The crowd seen across, as someone at its edge would: from just
     /// outside the spawn disc on the sun's side, a few metres up (higher for
     /// a larger disc), looking at its centre, so the nearest agents are
@@ -93,6 +98,7 @@ private:
     std::unique_ptr<InstancedCrowd> mInstanced;
     bool mInstancedActive = false;
     CameraOrbit mOrbit;
+    std::optional<scene::CameraPath> mFlight; ///< unless --orbit-distance
     uint32_t mDrawCount = 0;
     double mStepMs = 0.0; ///< summed over every step
     std::vector<uint32_t> mCulled;

@@ -179,7 +179,7 @@ BackendRun runBackend(const ParityCase& c, const std::string& backend) {
     const std::string bench = stem + ".json";
     std::filesystem::remove(run.screenshot);
     std::filesystem::remove(bench);
-    std::vector<std::string> args = {"--backend",   backend, "--validation", "--frames",    "2",
+    std::vector<std::string> args = {"--scene", "terrain", "--backend",   backend, "--validation", "--frames",    "2",
                                      "--benchmark", bench,   "--screenshot", run.screenshot};
     args.insert(args.end(), kView.begin(), kView.end());
     args.insert(args.end(), c.args.begin(), c.args.end());

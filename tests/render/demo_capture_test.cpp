@@ -24,7 +24,7 @@ std::string slurp(const std::string& path) {
 TEST(DemoCapture, TraceHasGpuPassesWithDurationAndCounters) {
     const std::string out = TESSERA_TEST_OUTPUT_DIR;
     const std::string trace = out + "/capture.json", bench = out + "/benchmark.json";
-    auto run = runDemo({"--backend", "hulldomain", "--frames", "6", "--warmup", "2", "--width", "160", "--height", "90",
+    auto run = runDemo({"--scene", "terrain", "--backend", "hulldomain", "--frames", "6", "--warmup", "2", "--width", "160", "--height", "90",
                         "--capture", trace, "--benchmark", bench, "--validation"});
     ASSERT_EQ(run.exitCode, 0) << run.output;
 

@@ -16,7 +16,7 @@ namespace {
 const std::string kOut = TESSERA_TEST_OUTPUT_DIR;
 // A view across a valley towards the mountains, far enough out that every
 // tile is in play and near enough that the shading detail shows.
-const std::vector<std::string> kFixedView = {"--width", "320", "--height", "180", "--frames", "3", "--camera",
+const std::vector<std::string> kFixedView = {"--scene", "terrain", "--width", "320", "--height", "180", "--frames", "3", "--camera",
                                              "1800,900,6800,-30,-16"};
 
 class GoldenImage : public ::testing::TestWithParam<std::string> {};
@@ -49,7 +49,7 @@ INSTANTIATE_TEST_SUITE_P(EveryBackend, GoldenImage, ::testing::Values("r2vb", "s
 TEST(DemoRun, FlythroughIsDeterministicForASeed) {
     auto shot = [&](const std::string& name) {
         const std::string path = kOut + "/" + name;
-        auto run = runDemo({"--width", "160", "--height", "90", "--frames", "4", "--seed", "7", "--backend", "r2vb",
+        auto run = runDemo({"--scene", "terrain", "--width", "160", "--height", "90", "--frames", "4", "--seed", "7", "--backend", "r2vb",
                             "--screenshot", path});
         EXPECT_EQ(run.exitCode, 0) << run.output;
         return readPng(path);
@@ -61,7 +61,7 @@ TEST(DemoRun, FlythroughIsDeterministicForASeed) {
 }
 
 TEST(DemoRun, AnyValidationMessageFailsTheRun) {
-    auto run = runDemo({"--plugin-dir", TESSERA_TEST_PLUGIN_DIR "/demo", "--backend", "invalid-usage", "--frames", "2",
+    auto run = runDemo({"--scene", "terrain", "--plugin-dir", TESSERA_TEST_PLUGIN_DIR "/demo", "--backend", "invalid-usage", "--frames", "2",
                         "--width", "64", "--height", "64", "--validation"});
     EXPECT_EQ(run.exitCode, 1) << run.output;
     EXPECT_NE(run.output.find("VUID-vkCmdSetViewport"), std::string::npos) << run.output;
@@ -70,7 +70,7 @@ TEST(DemoRun, AnyValidationMessageFailsTheRun) {
 }
 
 TEST(DemoRun, NullBackendRunsFramesWithoutAGpu) {
-    auto run = runDemo({"--backend", "null", "--frames", "5", "--validation"});
+    auto run = runDemo({"--scene", "terrain", "--backend", "null", "--frames", "5", "--validation"});
     ASSERT_EQ(run.exitCode, 0) << run.output;
     // The null backend creates no Vulkan instance, so there is nothing to validate.
     EXPECT_NE(run.output.find("validation messages: 0"), std::string::npos) << run.output;

@@ -55,7 +55,7 @@ std::string downCamera(int height, int yaw = 0) {
 }
 
 std::vector<std::string> commonArgs(const std::string& backend, const std::string& screenshot) {
-    return {"--backend", backend,         "--validation", "--width",      "256",     "--height",
+    return {"--scene", "terrain", "--backend", backend, "--validation", "--width", "256", "--height",
             "144",       "--clear-color", "1,0,1",        "--screenshot", screenshot};
 }
 

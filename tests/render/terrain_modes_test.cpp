@@ -66,7 +66,7 @@ ModeRun runMode(const std::string& name, const std::vector<std::string>& extra) 
     std::filesystem::remove(bench);
     std::filesystem::remove(run.screenshot);
     std::vector<std::string> args = {
-        "--backend", "hulldomain",  "--validation", "--camera",     kCamera,       "--width",
+        "--scene", "terrain", "--backend", "hulldomain",  "--validation", "--camera",     kCamera,       "--width",
         "320",       "--height",    "180",          "--frames",     "3",           "--warmup",
         "1",         "--benchmark", bench,          "--screenshot", run.screenshot};
     args.insert(args.end(), extra.begin(), extra.end());
@@ -144,7 +144,7 @@ TEST(TerrainModes, LowresOnlyBackendsRefuseOtherModes) {
     for (const char* backend : {"template"}) {
         for (const char* mode : {"adaptive", "continuous"}) {
             const std::vector<std::string> args = {
-                "--plugin-dir", templateDir, "--backend", backend, "--validation", "--terrain-mode", mode,
+                "--scene", "terrain", "--plugin-dir", templateDir, "--backend", backend, "--validation", "--terrain-mode", mode,
                 "--frames",     "1",         "--width",   "64",    "--height",     "64"};
             const auto run = runDemo(args);
             SCOPED_TRACE(joined(args));
@@ -160,7 +160,7 @@ TEST(TerrainModes, LowresOnlyBackendDrawsLowres) {
     const std::string shot = (testOutputDir("terrain_modes") / "r2vb_lowres.png").string();
     std::filesystem::remove(shot);
     const std::vector<std::string> args = {
-        "--backend", "r2vb",    "--validation", "--terrain-mode", "lowres", "--camera",     kCamera, "--frames",
+        "--scene", "terrain", "--backend", "r2vb",    "--validation", "--terrain-mode", "lowres", "--camera",     kCamera, "--frames",
         "1",         "--width", "320",          "--height",       "180",    "--screenshot", shot};
     const auto run = runDemo(args);
     ASSERT_EQ(run.exitCode, 0) << joined(args) << "\n" << run.output;

@@ -54,7 +54,8 @@ HeightDump runAndDump(const std::string& name, std::vector<std::string> extra) {
     const std::string prefix = (outputDir() / name).string();
     std::filesystem::remove(prefix + ".gpu.png");
     std::filesystem::remove(prefix + ".cpu.png");
-    std::vector<std::string> args = {"--backend", "hulldomain", "--validation", "--width", "160", "--height", "90"};
+    std::vector<std::string> args = {"--scene", "terrain", "--backend", "hulldomain", "--validation",
+                                     "--width", "160",     "--height",  "90"};
     args.insert(args.end(), extra.begin(), extra.end());
     args.insert(args.end(), {"--dump-heights", prefix});
     HeightDump dump;
