@@ -36,7 +36,7 @@ struct Shape {
 };
 
 std::optional<Shape> shapeFor(uint64_t texels, uint32_t regions, uint32_t limit) {
-    uint64_t width = std::clamp<uint64_t>(texels, 1, R2VB_CROWD_WIDTH);
+    uint64_t width = std::min<uint64_t>(std::clamp<uint64_t>(texels, 1, R2VB_CROWD_WIDTH), limit);
     for (;;) {
         const uint64_t regionRows = std::max<uint64_t>((texels + width - 1) / width, 1);
         if (regionRows * regions <= limit && width <= limit)
@@ -52,9 +52,9 @@ Result<std::unique_ptr<R2vbCrowdTargets>> R2vbCrowdTargets::create(gpu::Device& 
                                                                      uint32_t id) {
     const SideLimit limit = sideLimit(device.properties().limits);
     auto tooLarge = [&](const std::string& what) {
-        return fail("createCrowd: backend r2vb keeps ", what, " in render targets, and ",
-                    device.features().deviceName, " allows at most ", std::to_string(limit.texels),
-                    " texels a side (", limit.name, ")");
+        return fail("createCrowd: ", what, " would not fit in render targets of at most ",
+                    std::to_string(limit.texels), " texels a side, the most ", device.features().deviceName,
+                    " allows (", limit.name, ")");
     };
     const uint32_t creatures = uint32_t(crowd.creatures().size());
     const uint32_t lists = TS_LOD_TIERS * creatures;
