@@ -185,8 +185,7 @@ public:
         in.instanceCount = count;
         in.uniforms = uniforms.descriptor();
         in.instances = crowd->instancesView(slot);
-        in.constants.pyramid =
-            glm::uvec4(targets.pyramidSide(), targets.pyramidTop(), 0u, targets.listRegionTexels());
+        in.constants.pyramid = glm::uvec4(targets.pyramidSide(), targets.pyramidTop(), 0u, targets.listRegionTexels());
         const std::vector<glm::uvec2>& ranges = crowd->creatureRanges(slot);
         for (uint32_t c = 0; c < ranges.size() && c < TS_CROWD_MAX_CHARACTERS; ++c) {
             glm::uvec4& pair = in.constants.ranges[c / 2];

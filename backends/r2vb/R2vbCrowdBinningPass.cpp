@@ -21,9 +21,12 @@ namespace {
 
 namespace crowd = r2vb::crowd;
 constexpr VkFormat kUint4 = VK_FORMAT_R32G32B32A32_UINT;
-constexpr VkPipelineStageFlags2 kShaders = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+constexpr VkPipelineStageFlags2 kShaders =
+    VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
 
-glm::uvec4 sizeOf(const gpu::Image& image) { return {image.width(), image.height(), 0u, 0u}; }
+glm::uvec4 sizeOf(const gpu::Image& image) {
+    return {image.width(), image.height(), 0u, 0u};
+}
 
 } // namespace
 
@@ -34,8 +37,8 @@ R2vbCrowdBinningPass::R2vbCrowdBinningPass(gpu::Device& device)
                                                        r2vb_crowd_state_frag_spv, {VK_FORMAT_R32_UINT}));
     mClassify = gpu::Pipeline(device, r2vb::pointPipeline("r2vb.crowd.classify", mLayout, r2vb_crowd_classify_vert_spv,
                                                           r2vb_crowd_texel_frag_spv, {kUint4}));
-    gpu::GraphicsPipelineDesc reduce = r2vb::pointPipeline("r2vb.crowd.pyramid", mLayout, fullscreen_vert_spv,
-                                                           r2vb_crowd_reduce_frag_spv, {kUint4});
+    gpu::GraphicsPipelineDesc reduce =
+        r2vb::pointPipeline("r2vb.crowd.pyramid", mLayout, fullscreen_vert_spv, r2vb_crowd_reduce_frag_spv, {kUint4});
     reduce.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
     mReduce = gpu::Pipeline(device, reduce);
     mArgs = gpu::Pipeline(device, r2vb::pointPipeline("r2vb.crowd.args", mLayout, r2vb_crowd_args_vert_spv,
@@ -53,8 +56,8 @@ void R2vbCrowdBinningPass::record(gpu::FrameContext& frame, crowd::FrameInputs& 
     // Every buffer these passes copy into was last read by an earlier
     // frame's draws, copies or readback; those reads end before any write.
     gpu::memoryBarrier(cmd,
-                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT | kShaders |
-                           VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT |
+                           kShaders | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                        VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
     {
         gpu::PassScope pass(frame, "crowd.state");
@@ -98,9 +101,9 @@ void R2vbCrowdBinningPass::updateState(VkCommandBuffer cmd, crowd::FrameInputs& 
     crowd::beginArea(cmd, targets, {{0, 0}, {next.width(), next.height()}}, none);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mState.handle());
     const VkDescriptorImageInfo state = sampled(last);
-    const VkWriteDescriptorSet writes[3] = {bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
-                                            texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances),
-                                            imageWrite(R2VB_CROWD_BINDING_STATE, &state)};
+    const VkWriteDescriptorSet writes[3] = {
+        bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
+        texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances), imageWrite(R2VB_CROWD_BINDING_STATE, &state)};
     in.constants.target = sizeOf(next);
     crowd::push(*mDevice, cmd, mLayout, writes, in.constants);
     vkCmdDraw(cmd, in.instanceCount, 1, 0, 0);
@@ -120,9 +123,9 @@ void R2vbCrowdBinningPass::classify(VkCommandBuffer cmd, crowd::FrameInputs& in)
     crowd::beginArea(cmd, targets, {{0, 0}, {side, side}}, {});
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mClassify.handle());
     const VkDescriptorImageInfo state = sampled(t.state(t.stateRead()));
-    const VkWriteDescriptorSet writes[3] = {bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
-                                            texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances),
-                                            imageWrite(R2VB_CROWD_BINDING_STATE, &state)};
+    const VkWriteDescriptorSet writes[3] = {
+        bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
+        texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances), imageWrite(R2VB_CROWD_BINDING_STATE, &state)};
     in.constants.target = glm::uvec4(side, side, 0u, 0u);
     crowd::push(*mDevice, cmd, mLayout, writes, in.constants);
     vkCmdDraw(cmd, in.instanceCount, 1, 0, 0);
@@ -167,9 +170,9 @@ void R2vbCrowdBinningPass::writeArgs(VkCommandBuffer cmd, crowd::FrameInputs& in
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mArgs.handle());
     const VkDescriptorImageInfo even = sampled(t.pyramid(0));
     const VkDescriptorImageInfo odd = sampled(t.pyramid(1));
-    const VkWriteDescriptorSet writes[3] = {bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
-                                            imageWrite(R2VB_CROWD_BINDING_EVEN, &even),
-                                            imageWrite(R2VB_CROWD_BINDING_ODD, &odd)};
+    const VkWriteDescriptorSet writes[3] = {
+        bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
+        imageWrite(R2VB_CROWD_BINDING_EVEN, &even), imageWrite(R2VB_CROWD_BINDING_ODD, &odd)};
     in.constants.target = sizeOf(t.listDraws());
     crowd::push(*mDevice, cmd, mLayout, writes, in.constants);
     vkCmdDraw(cmd, t.listCount(), 1, 0, 0);
@@ -212,11 +215,10 @@ void R2vbCrowdBinningPass::extractLists(VkCommandBuffer cmd, crowd::FrameInputs&
     const VkDescriptorImageInfo state = sampled(t.state(t.stateRead()));
     const VkDescriptorImageInfo even = sampled(t.pyramid(0));
     const VkDescriptorImageInfo odd = sampled(t.pyramid(1));
-    const VkWriteDescriptorSet writes[5] = {bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
-                                            texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances),
-                                            imageWrite(R2VB_CROWD_BINDING_STATE, &state),
-                                            imageWrite(R2VB_CROWD_BINDING_EVEN, &even),
-                                            imageWrite(R2VB_CROWD_BINDING_ODD, &odd)};
+    const VkWriteDescriptorSet writes[5] = {
+        bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
+        texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances), imageWrite(R2VB_CROWD_BINDING_STATE, &state),
+        imageWrite(R2VB_CROWD_BINDING_EVEN, &even), imageWrite(R2VB_CROWD_BINDING_ODD, &odd)};
     in.constants.target = sizeOf(entries);
     crowd::push(*mDevice, cmd, mLayout, writes, in.constants);
     vkCmdDrawIndirect(cmd, t.listDrawBuffer().handle(), 0, t.listCount(), sizeof(VkDrawIndirectCommand));

@@ -19,7 +19,9 @@ namespace {
 namespace crowd = r2vb::crowd;
 constexpr VkFormat kUint4 = VK_FORMAT_R32G32B32A32_UINT;
 
-glm::uvec4 sizeOf(const gpu::Image& image) { return {image.width(), image.height(), 0u, 0u}; }
+glm::uvec4 sizeOf(const gpu::Image& image) {
+    return {image.width(), image.height(), 0u, 0u};
+}
 
 /// Copies the first `texels` texels of `image`, just rendered, to `buffer`.
 void copyOut(VkCommandBuffer cmd, const gpu::Image& image, uint64_t texels, const gpu::Buffer& buffer) {
@@ -36,9 +38,9 @@ R2vbCrowdNearPass::R2vbCrowdNearPass(gpu::Device& device)
       mSampler(device, VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "r2vb.crowd.near.sampler") {
     mSlots = gpu::Pipeline(device, r2vb::pointPipeline("r2vb.crowd.nearSlots", mLayout, r2vb_crowd_slots_vert_spv,
                                                        r2vb_crowd_slots_frag_spv, {kUint4, kUint4}));
-    mCommands = gpu::Pipeline(device, r2vb::pointPipeline("r2vb.crowd.nearCommands", mLayout,
-                                                          r2vb_crowd_commands_vert_spv, r2vb_crowd_texel_frag_spv,
-                                                          {kUint4}));
+    mCommands =
+        gpu::Pipeline(device, r2vb::pointPipeline("r2vb.crowd.nearCommands", mLayout, r2vb_crowd_commands_vert_spv,
+                                                  r2vb_crowd_texel_frag_spv, {kUint4}));
     gpu::GraphicsPipelineDesc skin = r2vb::pointPipeline("r2vb.crowd.nearSkin", mLayout, r2vb_crowd_skin_vert_spv,
                                                          r2vb_crowd_texel_frag_spv, {kUint4});
     // The crowd's bind-pose vertices (every creature's cage) as a stream;
@@ -78,11 +80,10 @@ void R2vbCrowdNearPass::writeSlots(VkCommandBuffer cmd, crowd::FrameInputs& in) 
                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     const VkDescriptorImageInfo even{mSampler.handle(), t.pyramid(0).view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     const VkDescriptorImageInfo odd{mSampler.handle(), t.pyramid(1).view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    const VkWriteDescriptorSet writes[5] = {bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
-                                            texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances),
-                                            imageWrite(R2VB_CROWD_BINDING_STATE, &state),
-                                            imageWrite(R2VB_CROWD_BINDING_EVEN, &even),
-                                            imageWrite(R2VB_CROWD_BINDING_ODD, &odd)};
+    const VkWriteDescriptorSet writes[5] = {
+        bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
+        texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances), imageWrite(R2VB_CROWD_BINDING_STATE, &state),
+        imageWrite(R2VB_CROWD_BINDING_EVEN, &even), imageWrite(R2VB_CROWD_BINDING_ODD, &odd)};
     in.constants.target = sizeOf(t.slotRecords());
     crowd::push(*mDevice, cmd, mLayout, writes, in.constants);
     vkCmdDraw(cmd, c.nearSlots(), 1, 0, 0);
@@ -100,9 +101,9 @@ void R2vbCrowdNearPass::writeCommands(VkCommandBuffer cmd, crowd::FrameInputs& i
     crowd::beginWhole(cmd, targets);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mCommands.handle());
     const VkBufferView slots = c.nearSlotsView();
-    const VkWriteDescriptorSet writes[3] = {bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
-                                            texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances),
-                                            texelWrite(TS_BINDING_CROWD_SLOTS, &slots)};
+    const VkWriteDescriptorSet writes[3] = {
+        bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
+        texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances), texelWrite(TS_BINDING_CROWD_SLOTS, &slots)};
     in.constants.target = sizeOf(t.nearCommands());
     crowd::push(*mDevice, cmd, mLayout, writes, in.constants);
     // Two texels (eight words) per command.
@@ -123,11 +124,10 @@ void R2vbCrowdNearPass::skinCages(VkCommandBuffer cmd, crowd::FrameInputs& in) {
     const VkBufferView baked = c.bakedView();
     const VkBufferView clips = c.clipsView();
     const VkBufferView slots = c.nearSlotsView();
-    const VkWriteDescriptorSet writes[5] = {bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
-                                            texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances),
-                                            texelWrite(TS_BINDING_CROWD_BAKED, &baked),
-                                            texelWrite(TS_BINDING_CROWD_CLIPS, &clips),
-                                            texelWrite(TS_BINDING_CROWD_SLOTS, &slots)};
+    const VkWriteDescriptorSet writes[5] = {
+        bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
+        texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances), texelWrite(TS_BINDING_CROWD_BAKED, &baked),
+        texelWrite(TS_BINDING_CROWD_CLIPS, &clips), texelWrite(TS_BINDING_CROWD_SLOTS, &slots)};
     in.constants.target = sizeOf(t.nearCages());
     crowd::push(*mDevice, cmd, mLayout, writes, in.constants);
     const VkBuffer stream = c.vertices().handle();

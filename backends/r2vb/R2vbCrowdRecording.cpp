@@ -6,11 +6,14 @@
 namespace tessera::backends::r2vb::crowd {
 namespace {
 
-constexpr VkPipelineStageFlags2 kShaders = VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+constexpr VkPipelineStageFlags2 kShaders =
+    VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
 constexpr VkPipelineStageFlags2 kOutput = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
 constexpr VkAccessFlags2 kOutputWrite = VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
 
-VkDeviceSize texelBytes(VkFormat format) { return format == VK_FORMAT_R32G32B32A32_UINT ? 16 : 4; }
+VkDeviceSize texelBytes(VkFormat format) {
+    return format == VK_FORMAT_R32G32B32A32_UINT ? 16 : 4;
+}
 
 } // namespace
 
@@ -33,8 +36,8 @@ gpu::PipelineLayout layout(gpu::Device& device, std::string name) {
 
 void push(gpu::Device& device, VkCommandBuffer cmd, const gpu::PipelineLayout& layout,
           std::span<const VkWriteDescriptorSet> writes, const shader::R2vbCrowdConstants& constants) {
-    device.fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout.handle(), 0,
-                                     uint32_t(writes.size()), writes.data());
+    device.fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout.handle(), 0, uint32_t(writes.size()),
+                                     writes.data());
     vkCmdPushConstants(cmd, layout.handle(), layout.pushConstantStages(), 0, sizeof constants, &constants);
 }
 
@@ -57,8 +60,8 @@ void beginArea(VkCommandBuffer cmd, std::span<gpu::Image* const> targets, VkRect
     rendering.colorAttachmentCount = uint32_t(attachments.size());
     rendering.pColorAttachments = attachments.data();
     vkCmdBeginRendering(cmd, &rendering);
-    const VkViewport viewport{float(area.offset.x), float(area.offset.y), float(area.extent.width),
-                              float(area.extent.height), 0.0f, 1.0f};
+    const VkViewport viewport{
+        float(area.offset.x), float(area.offset.y), float(area.extent.width), float(area.extent.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &area);
 }
@@ -90,8 +93,8 @@ void renderedToCopy(VkCommandBuffer cmd, const gpu::Image& image) {
                          VK_ACCESS_2_TRANSFER_READ_BIT);
 }
 
-void appendCopy(std::vector<VkBufferImageCopy>& regions, const gpu::Image& image, uint32_t firstRow,
-                uint64_t texels, VkDeviceSize offset) {
+void appendCopy(std::vector<VkBufferImageCopy>& regions, const gpu::Image& image, uint32_t firstRow, uint64_t texels,
+                VkDeviceSize offset) {
     const uint32_t width = image.width();
     const uint32_t rows = uint32_t(texels / width);
     const uint32_t rest = uint32_t(texels % width);

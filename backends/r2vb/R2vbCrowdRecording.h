@@ -25,10 +25,10 @@ namespace tessera::backends::r2vb::crowd {
 struct FrameInputs {
     GpuCrowd* crowd = nullptr;
     R2vbCrowdTargets* targets = nullptr;
-    uint32_t instanceCount = 0;                ///< instances uploaded this frame
-    VkDescriptorBufferInfo uniforms{};         ///< shader::CrowdUniforms
-    VkBufferView instances = VK_NULL_HANDLE;   ///< the frame slot's instances (RGBA32UI texels)
-    shader::R2vbCrowdConstants constants{};    ///< pyramid and ranges; each pass sets target
+    uint32_t instanceCount = 0;              ///< instances uploaded this frame
+    VkDescriptorBufferInfo uniforms{};       ///< shader::CrowdUniforms
+    VkBufferView instances = VK_NULL_HANDLE; ///< the frame slot's instances (RGBA32UI texels)
+    shader::R2vbCrowdConstants constants{};  ///< pyramid and ranges; each pass sets target
 };
 
 /// The layout of every crowd pass: the crowd's uniforms and texel buffers
@@ -62,8 +62,8 @@ void renderedToCopy(VkCommandBuffer cmd, const gpu::Image& image);
 /// The exact R2VB copy of `texels` texels from row `firstRow` of `image`
 /// (TRANSFER_SRC_OPTIMAL) to `buffer` at `offset`: whole rows, then the rest
 /// of the last one, appended to `regions` for one vkCmdCopyImageToBuffer.
-void appendCopy(std::vector<VkBufferImageCopy>& regions, const gpu::Image& image, uint32_t firstRow,
-                uint64_t texels, VkDeviceSize offset);
+void appendCopy(std::vector<VkBufferImageCopy>& regions, const gpu::Image& image, uint32_t firstRow, uint64_t texels,
+                VkDeviceSize offset);
 void copy(VkCommandBuffer cmd, const gpu::Image& image, const gpu::Buffer& buffer,
           std::span<const VkBufferImageCopy> regions);
 

@@ -49,12 +49,11 @@ std::optional<Shape> shapeFor(uint64_t texels, uint32_t regions, uint32_t limit)
 } // namespace
 
 Result<std::unique_ptr<R2vbCrowdTargets>> R2vbCrowdTargets::create(gpu::Device& device, const GpuCrowd& crowd,
-                                                                     uint32_t id) {
+                                                                   uint32_t id) {
     const SideLimit limit = sideLimit(device.properties().limits);
     auto tooLarge = [&](const std::string& what) {
-        return fail("createCrowd: ", what, " would not fit in render targets of at most ",
-                    std::to_string(limit.texels), " texels a side, the most ", device.features().deviceName,
-                    " allows (", limit.name, ")");
+        return fail("createCrowd: ", what, " would not fit in render targets of at most ", std::to_string(limit.texels),
+                    " texels a side, the most ", device.features().deviceName, " allows (", limit.name, ")");
     };
     const uint32_t creatures = uint32_t(crowd.creatures().size());
     const uint32_t lists = TS_LOD_TIERS * creatures;
