@@ -22,18 +22,36 @@
 // vertex shader. Continuous mode skips the first three: one level for all.
 // The levels are those of hulldomain's compute pre-pass (terrain_metric.glsl),
 // clamped to the emulated tessellator's 14.99.
+//
+// Instanced crowds (drawCrowd) are culled and binned the same way, with
+// render targets only: R2vbCrowdBinningPass (the LOD state per id, a
+// histogram pyramid over the creature-sorted instances, the lists' counts
+// and the lists compacted by traversing it) and R2vbCrowdNearPass (near
+// slots, their commands and skinned compressed cages); the tiers are then
+// drawn by the shared CrowdMeshPass and EmulatedCrowdNearPass.
+#include "CrowdDescriptors.h"
+#include "CrowdMeshPass.h"
+#include "EmulatedCrowdNearPass.h"
 #include "EmulatedTerrainBackend.h"
+#include "GpuCrowdSet.h"
 #include "R2vbCagePass.h"
-#include "R2vbCommandPass.h"
-#include "R2vbFactorPass.h"
 #include "R2vbCharacterSkinPass.h"
+#include "R2vbCommandPass.h"
+#include "R2vbCrowdBinningPass.h"
+#include "R2vbCrowdNearPass.h"
+#include "R2vbCrowdTargets.h"
+#include "R2vbFactorPass.h"
 #include "R2vbTargets.h"
 #include "tessera/backend/PluginApi.h"
+
+#include "character.frag_crowd_texels.spv.h"
+#include "crowd_mesh.vert_texels.spv.h"
 
 #include <algorithm>
 #include <array>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace tessera::backends {
 namespace {
@@ -47,12 +65,13 @@ public:
         caps.tessellation = backend::TessellationPath::Emulated;
         caps.maxTessFactor = 14.99f;
         caps.terrainModes = 0b111;
+        caps.crowd = true;
         checkRequirements(device, caps);
         return caps;
     }
 
 protected:
-    Status initializeFactorPasses(const backend::BackendInitInfo&) override {
+    Status initializeFactorPasses(const backend::BackendInitInfo& info) override {
         // The command pass writes a record's two texels and five commands at
         // once; every desktop driver and lavapipe have 8 attachments.
         const VkPhysicalDeviceLimits& limits = mDevice->properties().limits;
@@ -65,10 +84,24 @@ protected:
         mFactorPass = R2vbFactorPass(*mDevice);
         mCommandPass = R2vbCommandPass(*mDevice);
         mCharacterSkin = R2vbCharacterSkinPass(*mDevice);
+        mCrowds = GpuCrowdSet(*mDevice);
+        mCrowdBinning = R2vbCrowdBinningPass(*mDevice);
+        mCrowdNear = R2vbCrowdNearPass(*mDevice);
+        const auto color = static_cast<VkFormat>(info.colorFormat);
+        const auto depth = static_cast<VkFormat>(info.depthFormat);
+        mCrowdMesh = CrowdMeshPass(*mDevice, CrowdDescriptors::Mode::Texels, crowd_mesh_vert_texels_spv,
+                                   character_frag_crowd_texels_spv, color, depth, "r2vb.crowd.mesh");
+        mCrowdNearDraw = EmulatedCrowdNearPass(*mDevice, color, depth, "r2vb");
         return {};
     }
 
     void shutdownFactorPasses() override {
+        mCrowdTargets.clear();
+        mCrowds.clear();
+        mCrowdNearDraw = {};
+        mCrowdMesh = {};
+        mCrowdNear = {};
+        mCrowdBinning = {};
         for (auto& targets : mTargets) targets = {};
         mCharacterSkin = {};
         mCommandPass = {};
@@ -111,6 +144,69 @@ protected:
         mCharacterSkin.record(*mFrame, instance, characterPush());
     }
 
+public:
+    /// Also fails, naming the limit, when the crowd's render targets would
+    /// not fit this device (R2vbCrowdTargets).
+    Result<backend::CrowdHandle> createCrowd(const backend::CrowdDesc& desc) override {
+        auto handle = mCrowds.create(
+            desc, [this](backend::CharacterHandle h) { return findCharacter(h); }, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+        if (!handle) return handle.error();
+        const uint32_t id = handle.value().id;
+        auto targets = R2vbCrowdTargets::create(*mDevice, *mCrowds.find(handle.value()), id);
+        if (!targets) {
+            mCrowds.destroy(handle.value());
+            return targets.error();
+        }
+        if (mCrowdTargets.size() <= id) mCrowdTargets.resize(id + 1);
+        mCrowdTargets[id] = std::move(targets.value());
+        return handle;
+    }
+
+    void destroyCrowd(backend::CrowdHandle handle) override {
+        if (!mCrowds.find(handle)) return;
+        mCrowds.destroy(handle);
+        // A frame in flight may still render into them.
+        std::shared_ptr<R2vbCrowdTargets> old(std::move(mCrowdTargets[handle.id]));
+        mDevice->deferDestroy([old]() mutable { old.reset(); });
+    }
+
+    void drawCrowd(backend::CrowdHandle handle, const backend::CrowdDrawInfo& draw) override {
+        GpuCrowd* crowd = mCrowds.find(handle);
+        if (!crowd || handle.id >= mCrowdTargets.size() || !mCrowdTargets[handle.id]) return;
+        R2vbCrowdTargets& targets = *mCrowdTargets[handle.id];
+        const uint32_t slot = mFrame->slot();
+        GpuCrowdSet::reportCounts(*crowd, slot, mReport);
+        const uint32_t count = crowd->uploadInstances(slot, draw.instances);
+        const gpu::UniformSlice uniforms = mFrame->pushUniform(crowd->uniforms(draw, count));
+        suspendMainPass();
+        r2vb::crowd::FrameInputs in;
+        in.crowd = crowd;
+        in.targets = &targets;
+        in.instanceCount = count;
+        in.uniforms = uniforms.descriptor();
+        in.instances = crowd->instancesView(slot);
+        in.constants.pyramid = glm::uvec4(targets.pyramidSide(), targets.pyramidTop(), 0u, targets.listRegionTexels());
+        const std::vector<glm::uvec2>& ranges = crowd->creatureRanges(slot);
+        for (uint32_t c = 0; c < ranges.size() && c < TS_CROWD_MAX_CHARACTERS; ++c) {
+            glm::uvec4& pair = in.constants.ranges[c / 2];
+            pair[(c & 1u) * 2] = ranges[c].x;
+            pair[(c & 1u) * 2 + 1] = ranges[c].y;
+        }
+        mCrowdBinning.record(*mFrame, in);
+        mCrowdNear.record(*mFrame, in);
+        GpuCrowdSet::recordCountsCopy(mFrame->cmd(), *crowd, slot);
+        ensureMainPass();
+        CrowdDescriptors descriptors(CrowdDescriptors::Mode::Texels, *crowd, slot, mFrameUniforms, uniforms);
+        mCrowdNearDraw.record(*mFrame, *crowd, descriptors);
+        mCrowdMesh.record(*mFrame, *crowd, descriptors);
+        mReport.passes += R2vbCrowdBinningPass::kPasses + R2vbCrowdNearPass::kPasses + TS_LOD_TIERS;
+        mReport.intermediateBytes += crowd->bytes() + targets.bytes();
+    }
+
+    Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle handle) override {
+        return mCrowds.readTiers(handle);
+    }
+
 private:
     /// The slot's targets, made (once per terrain size) large enough for every
     /// patch of a terrain of `patchCount` patches.
@@ -129,6 +225,13 @@ private:
     R2vbCommandPass mCommandPass;
     R2vbCharacterSkinPass mCharacterSkin;
     std::array<R2vbTargets, gpu::kFramesInFlight> mTargets;
+    GpuCrowdSet mCrowds;
+    /// Per crowd handle id (null once destroyed): its binning targets.
+    std::vector<std::unique_ptr<R2vbCrowdTargets>> mCrowdTargets;
+    R2vbCrowdBinningPass mCrowdBinning;
+    R2vbCrowdNearPass mCrowdNear;
+    CrowdMeshPass mCrowdMesh;
+    EmulatedCrowdNearPass mCrowdNearDraw;
 };
 
 backend::Backend* create() { return new R2vbBackend(); }
