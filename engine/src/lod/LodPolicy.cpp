@@ -26,8 +26,8 @@ LodPolicy LodPolicy::forDevice(DeviceClass device) {
         // on a CPU rasterizer tiny triangles cost far more than their pixels.
         policy.targetEdgePixels = 3.0f;
         policy.budget.maxNearInstances = 4;
-        policy.budget.maxTessellatedTriangles = 150'000;
-        policy.budget.maxMiddleInstances = 16;
+        policy.budget.maxTessellatedTriangles = 100'000;
+        policy.budget.maxMiddleInstances = 12;
         policy.budget.maxFarInstances = 3000;
         policy.farMeshTriangles = 64;
     }
