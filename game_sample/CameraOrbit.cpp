@@ -7,8 +7,13 @@ namespace tessera::demo {
 
 scene::CameraPose CameraOrbit::pose(const terrain::Terrain& terrain, double seconds) const {
     const float a = kStart + kSpeed * float(seconds);
-    glm::vec3 position = site + glm::vec3(distance * std::sin(a), 0.0f, distance * std::cos(a));
-    position.y = std::max(site.y + height, terrain.heightAt(position.x, position.z) + clearance);
+    float radius = distance, rise = height;
+    if (dollySeconds > 0.0) {
+        radius = distance + (endDistance - distance) * float(std::clamp(seconds / dollySeconds, 0.0, 1.0));
+        rise = height * radius / distance;
+    }
+    glm::vec3 position = site + glm::vec3(radius * std::sin(a), 0.0f, radius * std::cos(a));
+    position.y = std::max(site.y + rise, terrain.heightAt(position.x, position.z) + clearance);
     const glm::vec3 d = site + glm::vec3(0.0f, lookHeight, 0.0f) - position;
     scene::CameraPose pose;
     pose.position = position;

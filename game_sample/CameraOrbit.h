@@ -16,6 +16,11 @@ struct CameraOrbit {
     float height = 1.6f;     ///< metres above the site
     float lookHeight = 0.6f; ///< the camera aims this high above the site
     float clearance = 1.0f;  ///< metres above the ground under the camera, at least
+    /// A dolly: over the first `dollySeconds` the distance goes from
+    /// `distance` to `endDistance` (and the height with it, keeping the
+    /// view's angle); 0 seconds: no dolly.
+    float endDistance = 0.0f;
+    double dollySeconds = 0.0;
 
     /// Radians per second around the site.
     static constexpr float kSpeed = 0.15f;

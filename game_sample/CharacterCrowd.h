@@ -38,6 +38,10 @@ public:
     /// Where the crowd gathers (on the ground), for the camera.
     glm::vec3 site() const { return mSite; }
     /// The characters scene's camera at `seconds`: circling the site.
+    void dollyOrbit(float endDistance, double seconds) override {
+        mOrbit.endDistance = endDistance;
+        mOrbit.dollySeconds = seconds;
+    }
     scene::CameraPose orbitPose(double seconds) const override { return mOrbit.pose(*mTerrain, seconds); }
 
 private:

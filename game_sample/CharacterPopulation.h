@@ -28,6 +28,10 @@ public:
     /// The scene's camera at `seconds` (unless --camera fixes it).
     virtual scene::CameraPose orbitPose(double seconds) const = 0;
 
+    /// Makes the scene's orbit a dolly to `endDistance` metres over
+    /// `seconds` (--orbit-distance A:B).
+    virtual void dollyOrbit(float endDistance, double seconds) = 0;
+
     /// The instanced crowd this population can be drawn as
     /// (Backend::drawCrowd), or null when it draws only through items().
     virtual InstancedCrowd* instancedCrowd() { return nullptr; }

@@ -11,6 +11,7 @@
 #include "RenderSession.h"
 #include "SceneRun.h"
 #include "TerrainBenchmark.h"
+#include "tessera/core/ImageFile.h"
 #include "tessera/core/Log.h"
 #include "tessera/gpu/Instance.h"
 #include "tessera/profiler/CpuScope.h"
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 namespace tessera::demo {
 namespace {
@@ -40,12 +42,25 @@ Status runFlythrough(const DemoOptions& options) {
     RenderSession& session = run.session();
     InstancedCrowd* instanced = run.instancedCrowd();
 
+    if (!options.record.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(options.record, ec);
+        if (ec) return fail("--record ", options.record, ": ", ec.message());
+    }
     uint32_t rendered = 0;
     for (uint32_t frame = 0; frame < frames; ++frame, ++rendered) {
         if (!session.pollWindow()) break;
         profiler.beginFrame(frame);
-        run.renderFrame(frame, frame + 1 == frames && !options.screenshot.empty());
+        const bool record = !options.record.empty();
+        run.renderFrame(frame, record || (frame + 1 == frames && !options.screenshot.empty()));
         profiler.endFrame();
+        if (record) {
+            // Waits for the frame: a recording is for looking at, not timing.
+            char name[32];
+            std::snprintf(name, sizeof name, "frame_%04u.png", frame);
+            const std::filesystem::path path = std::filesystem::path(options.record) / name;
+            if (Status ok = writePng(path, {session.width(), session.height(), session.finish()}); !ok) return ok;
+        }
     }
     const std::vector<uint8_t> pixels = session.finish();
     if (!options.crowdTiers.empty()) {

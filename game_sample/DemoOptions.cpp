@@ -121,13 +121,17 @@ Scene:
                         displaced, animated creatures and CesiumMan walking
                         on the terrain; the default when --model is given)
   --model FILE          place a .gltf or .glb file in the characters scene,
-                        playing its first animation (repeatable)
+                        playing its first animation, or (--scene crowd) mix
+                        it into the crowd with the generated creatures; a
+                        crowd's models need a skin and a walk clip
+                        (repeatable)
   --crowd N             generated creatures in the characters scene, with
                         CesiumMan (default 6; 0: only the --model files,
                         centred where the crowd would stand)
   --orbit-distance M    radius of the camera's circle around the characters
                         (default 5 metres); in the crowd scene, circle the
-                        crowd's spawn at M metres instead of flying over it
+                        crowd's spawn at M metres instead of flying over it;
+                        A:B dollies from A to B metres over the run
   --agents N            agents in the crowd scene (default 2000; refused
                         when more than the machine's memory holds); with
                         --bench crowd or crowd-sim a comma list of crowd
@@ -202,6 +206,8 @@ Output:
                         headless; until closed with --window)
   --window              open a window (GLFW) instead of rendering headless
   --screenshot FILE     write the last frame as PNG
+  --record DIR          write every frame as DIR/frame_NNNN.png (headless;
+                        waits for each frame)
   --capture FILE        write a Chrome trace (Perfetto, chrome://tracing)
   --benchmark FILE      write per-pass min/median/max GPU ms as JSON
   --warmup N            frames run first and left out of --benchmark (default 0;
@@ -352,10 +358,17 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         }
         else if (flag == "--crowd") TESSERA_TAKE_COUNT(crowd, 0, 256)
         else if (flag == "--orbit-distance") {
+            // M, or A:B for a dolly from A to B metres over the run.
             TESSERA_TAKE(text);
-            auto n = parseNumber(flag, text, 0.25f, 10000.0f);
+            const size_t colon = text.find(':');
+            auto n = parseNumber(flag, text.substr(0, colon), 0.25f, 10000.0f);
             if (!n) return n.error();
             o.orbitDistance = n.value();
+            if (colon != std::string::npos) {
+                auto end = parseNumber(flag, text.substr(colon + 1), 0.25f, 10000.0f);
+                if (!end) return end.error();
+                o.orbitDistanceEnd = end.value();
+            }
         }
         else if (flag == "--agents") {
             TESSERA_TAKE(v);
@@ -379,6 +392,7 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         else if (flag == "--benchmark") { TESSERA_TAKE(v); o.benchmark = v; }
         else if (flag == "--dump-heights") { TESSERA_TAKE(v); o.dumpHeights = v; }
         else if (flag == "--crowd-tiers") { TESSERA_TAKE(v); o.crowdTiers = v; }
+        else if (flag == "--record") { TESSERA_TAKE(v); o.record = v; }
         else if (flag == "--out") { TESSERA_TAKE(v); o.benchOut = v; }
         else if (flag == "--out-dir") { TESSERA_TAKE(v); o.benchOutDir = v; }
         else if (flag == "--bench") {
@@ -475,11 +489,12 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
     if (o.agents.size() > 1 && !crowdBench)
         return fail("--agents takes one count in the crowd scene (a list is for --bench crowd and crowd-sim), got ",
                     std::to_string(o.agents.size()));
-    if (!o.models.empty() && o.scene != "characters")
-        return fail("--model places models in the characters scene; drop --scene ", o.scene);
+    if (!o.models.empty() && o.scene != "characters" && o.scene != "crowd")
+        return fail("--model places models in the characters or crowd scene; drop --scene ", o.scene);
     if (o.bench == "terrain" && o.scene != "terrain")
         return fail("--bench terrain measures the terrain; drop --scene ", o.scene);
     if (!o.tessTargetGiven) o.tessellation.targetPixels = terrain::defaultTargetPixels(o.tessellation.metric);
+    if (o.window && !o.record.empty()) return fail("--record writes headless frames; drop --window");
     if (o.window && !o.screenshot.empty() && o.frames == 0)
         return fail("--screenshot with --window needs --frames N to know which frame to capture");
     return o;

@@ -49,6 +49,7 @@ struct DemoOptions {
     /// --crowd-tiers FILE: the last frame's crowd agents per LOD tier as the
     /// backend binned them and as the CPU reference did (JSON).
     std::string crowdTiers;
+    std::string record;                 ///< --record DIR: every frame as DIR/frame_NNNN.png
 
     /// --terrain-mode; unset: adaptive where the backend draws it, else lowres.
     std::optional<terrain::TerrainMode> terrainMode;
@@ -78,6 +79,7 @@ struct DemoOptions {
     /// --orbit-distance M: the camera circle's radius; unset: 5 m in the
     /// characters scene, 30 m in the crowd scene.
     std::optional<float> orbitDistance;
+    std::optional<float> orbitDistanceEnd; ///< --orbit-distance A:B: the dolly's end
     bool displacement = true;           ///< --no-displacement draws the bare interpolated cage
     bool terrain = true;                ///< --no-terrain: characters alone on the clear colour (crack tests, captures)
     backend::CharacterPath characterPath = backend::CharacterPath::TwoPass; ///< --character-path

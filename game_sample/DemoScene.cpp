@@ -58,6 +58,8 @@ Result<std::unique_ptr<DemoScene>> DemoScene::load(const DemoOptions& options, u
         scene->mSimulated = crowd.value().get();
         scene->mCharacters = std::move(crowd.value());
     }
+    if (options.orbitDistanceEnd && scene->mCharacters)
+        scene->mCharacters->dollyOrbit(*options.orbitDistanceEnd, double(frames > 1 ? frames - 1 : 1) * kSecondsPerFrame);
     if (options.meteors > 0) scene->scheduleMeteors(options, frames);
     return scene;
 }

@@ -1,5 +1,6 @@
 #include "SimulatedCrowd.h"
 
+#include "CrowdInstance.h"
 #include "CrowdSetup.h"
 #include "tessera/core/Log.h"
 #include "tessera/core/ParallelFor.h"
@@ -65,6 +66,22 @@ Result<std::unique_ptr<SimulatedCrowd>> SimulatedCrowd::create(const DemoOptions
     const uint32_t agents = options.agents.empty() ? kDefaultAgents : options.agents.front();
     if (Status ok = self->mAssets.addFroblins(options.contentDir, CharacterAssets::kFroblinSeeds); !ok)
         return ok.error();
+    // --model files join the generated creatures in the crowd: each must
+    // walk, so it needs a skin and a clip (the gait check below then needs
+    // the clip to cover ground).
+    if (CharacterAssets::kFroblinSeeds + options.models.size() > TS_CROWD_MAX_CHARACTERS)
+        return fail("--model: a crowd mixes at most ", std::to_string(TS_CROWD_MAX_CHARACTERS), " creatures, ",
+                    std::to_string(CharacterAssets::kFroblinSeeds), " generated and ",
+                    std::to_string(options.models.size()), " --model files given");
+    for (const std::string& file : options.models) {
+        if (Status ok = self->mAssets.add(file); !ok) return ok.error();
+        const character::CharacterAsset& asset = self->mAssets.all().back().asset;
+        if (asset.cage.bindings.empty())
+            return fail(file, ": has no skin, so it cannot walk in the crowd (a crowd's creatures are skinned glTF "
+                              "meshes with an animation clip)");
+        if (asset.clips.empty())
+            return fail(file, ": has no animation clip, so it cannot walk in the crowd (it needs a walk cycle)");
+    }
     auto gait = measureCrowdGait(self->mAssets, kCreatureHeight, kStrideRadius);
     if (!gait) return gait.error();
     self->mGait = std::move(gait.value());

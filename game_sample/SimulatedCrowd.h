@@ -63,6 +63,10 @@ public:
     /// The scene's camera: a flight over the crowd (a seeded loop inside
     /// the spawn disc, low enough that the nearest agents are tessellated),
     /// or with --orbit-distance a circle around the spawn's centre.
+    void dollyOrbit(float endDistance, double seconds) override {
+        mOrbit.endDistance = endDistance;
+        mOrbit.dollySeconds = seconds;
+    }
     scene::CameraPose orbitPose(double seconds) const override;
     /// The crowd seen across, as someone at its edge would: from just
     /// outside the spawn disc on the sun's side, a few metres up (higher for
