@@ -6,16 +6,25 @@
 //   streamout.cull     a geometry shader drops patches outside the frustum, streams out the rest
 //   streamout.factors  draw-auto over the survivors: levels and tessellator commands, streamed out
 // then EmulatedTerrainBackend draws the pattern pieces with one indirect draw.
+// Instanced crowds are culled and binned with the same means (the Froblins'
+// D3D10 technique): a geometry shader culls the instances as points and
+// streams the survivors out while rasterising their LOD state into a render
+// target, successive stream-out passes sort them into the tier lists, and
+// stream queries copied on the GPU give the indirect draws their counts
+// (crowd.cull, crowd.bin, crowd.slots, crowd.skin; StreamoutCrowdRenderer.h).
 #include "EmulatedTerrainBackend.h"
 
 #include "tessera/gpu/Barriers.h"
 #include "StreamoutBuffers.h"
 #include "StreamoutCagePass.h"
 #include "StreamoutCharacterSkinPass.h"
+#include "StreamoutCrowdRenderer.h"
 #include "StreamoutCullPass.h"
 #include "StreamoutFactorPass.h"
 #include "StreamoutRecording.h"
 #include "tessera/backend/PluginApi.h"
+
+#include <memory>
 
 namespace tessera::backends {
 namespace {
@@ -31,22 +40,26 @@ public:
         caps.usesGeometryShaders = true;
         caps.maxTessFactor = 14.99f;
         caps.terrainModes = 0b111;
+        caps.crowd = true;
         checkRequirements(device, caps);
         return caps;
     }
 
 protected:
-    Status initializeFactorPasses(const backend::BackendInitInfo&) override {
+    Status initializeFactorPasses(const backend::BackendInitInfo& info) override {
         if (Status limits = StreamoutFactorPass::checkDevice(*mDevice); !limits) return limits;
         mBuffers = StreamoutBuffers(*mDevice);
         mCagePass = StreamoutCagePass(*mDevice);
         mCullPass = StreamoutCullPass(*mDevice);
         mFactorPass = StreamoutFactorPass(*mDevice);
         mCharacterSkin = StreamoutCharacterSkinPass(*mDevice);
+        mCrowds = std::make_unique<StreamoutCrowdRenderer>(*mDevice, static_cast<VkFormat>(info.colorFormat),
+                                                           static_cast<VkFormat>(info.depthFormat));
         return {};
     }
 
     void shutdownFactorPasses() override {
+        mCrowds.reset();
         mCharacterSkin = {};
         mFactorPass = {};
         mCullPass = {};
@@ -91,7 +104,39 @@ protected:
         mCharacterSkin.record(*mFrame, instance, characterPush());
     }
 
+public:
+    Result<backend::CrowdHandle> createCrowd(const backend::CrowdDesc& desc) override {
+        if (!mCrowds) return Error{"createCrowd before initialize"};
+        return mCrowds->create(desc, [this](backend::CharacterHandle h) { return findCharacter(h); });
+    }
+
+    void destroyCrowd(backend::CrowdHandle handle) override {
+        if (mCrowds) mCrowds->destroy(handle);
+    }
+
+    void drawCrowd(backend::CrowdHandle handle, const backend::CrowdDrawInfo& draw) override {
+        GpuCrowd* crowd = mCrowds ? mCrowds->find(handle) : nullptr;
+        if (!crowd) return;
+        const uint32_t slot = mFrame->slot();
+        GpuCrowdSet::reportCounts(*crowd, slot, mReport);
+        const uint32_t count = crowd->uploadInstances(slot, draw.instances);
+        const gpu::UniformSlice uniforms = mFrame->pushUniform(crowd->uniforms(draw, count));
+        suspendMainPass();
+        mCrowds->recordPasses(*mFrame, handle, uniforms);
+        GpuCrowdSet::recordCountsCopy(mFrame->cmd(), *crowd, slot);
+        ensureMainPass();
+        mCrowds->recordDraws(*mFrame, *crowd, mFrameUniforms, uniforms);
+        mReport.passes += StreamoutCrowdRenderer::kPasses;
+        mReport.intermediateBytes += mCrowds->bytes(handle);
+    }
+
+    Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle handle) override {
+        if (!mCrowds) return Error{"readCrowdTiers: no such crowd"};
+        return mCrowds->readTiers(handle);
+    }
+
 private:
+    std::unique_ptr<StreamoutCrowdRenderer> mCrowds;
     StreamoutBuffers mBuffers;
     StreamoutCagePass mCagePass;
     StreamoutCullPass mCullPass;

@@ -43,11 +43,8 @@ TEST(CrowdDemoScene, CreaturesDrawnOnEveryGpuBackend) {
         ASSERT_EQ(shot.result.exitCode, 0) << shot.command << "\n" << shot.result.output;
         EXPECT_TRUE(validationClean(shot.result)) << shot.command << "\n" << shot.result.output;
         EXPECT_NE(shot.result.output.find("crowd: 2000 agents on "), std::string::npos) << shot.result.output;
-        // hulldomain and r2vb cull and bin the whole crowd on the GPU; the
-        // others draw the nearest agents through the character path.
-        const bool instanced = std::string(backend) == "hulldomain" || std::string(backend) == "r2vb";
-        const std::string mode = instanced ? "every agent drawn instanced, culled and sorted into LOD tiers on the GPU"
-                                           : "the 48 nearest in view drawn";
+        // Every GPU backend culls and bins the whole crowd on the GPU.
+        const std::string mode = "every agent drawn instanced, culled and sorted into LOD tiers on the GPU";
         EXPECT_NE(shot.result.output.find(mode), std::string::npos) << shot.result.output;
         ASSERT_TRUE(shot.image) << shot.readError;
         const size_t drawn = size_t(320) * 180 - findHoles(*shot.image).magenta;

@@ -1,0 +1,103 @@
+#include "StreamoutCrowdBinPass.h"
+
+#include "StreamoutRecording.h"
+#include "tessera/gpu/Barriers.h"
+#include "tessera/gpu/Device.h"
+
+#include "streamout_crowd_bin.geom.spv.h"
+#include "streamout_crowd_bin.vert.spv.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace tessera::backends {
+namespace {
+
+constexpr VkDeviceSize kRecordBytes = 16; // a survivor record, a list entry
+
+} // namespace
+
+StreamoutCrowdBinPass::StreamoutCrowdBinPass(gpu::Device& device, const gpu::PipelineLayout& layout)
+    : mLayout(&layout) {
+    gpu::GraphicsPipelineDesc desc;
+    desc.name = "streamout.crowd.bin";
+    desc.layout = &layout;
+    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, streamout_crowd_bin_vert_spv},
+                   {VK_SHADER_STAGE_GEOMETRY_BIT, streamout_crowd_bin_geom_spv}};
+    // The survivors' stream: (instance, next state, id, creature) per point.
+    desc.vertexBindings = {{0, uint32_t(kRecordBytes), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32A32_UINT, 0}};
+    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+    desc.cullMode = VK_CULL_MODE_NONE;
+    desc.depthTest = false;
+    desc.depthWrite = false;
+    desc.rasterizerDiscard = true;
+    mPipeline = gpu::Pipeline(device, desc);
+}
+
+void StreamoutCrowdBinPass::record(gpu::FrameContext& frame, GpuCrowd& crowd, StreamoutCrowdResources& resources,
+                                   const StreamoutCrowdBindings& bindings) {
+    gpu::PassScope pass(frame, "crowd.bin");
+    VkCommandBuffer cmd = frame.cmd();
+    const auto& fn = frame.device().fn();
+    const uint32_t creatures = uint32_t(crowd.creatures().size());
+    const auto& ranges = crowd.creatureRanges(frame.slot());
+
+    streamout::beginStreamOut(cmd);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
+    const VkBuffer survivors = resources.survivors().handle();
+    const VkBuffer lists = crowd.lists().handle();
+    const VkDeviceSize listBytes = VkDeviceSize(crowd.maxInstances()) * kRecordBytes;
+    for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier) {
+        bindings.push(frame, *mLayout, tier, 0, 0);
+        for (uint32_t c = 0; c < creatures; ++c) {
+            // Every list gets its query, empty creatures too (their draw has
+            // no vertices), so every result is available to copy.
+            const VkDeviceSize from = ranges[c].y > 0 ? VkDeviceSize(ranges[c].x) * kRecordBytes : 0;
+            vkCmdBindVertexBuffers(cmd, 0, 1, &survivors, &from);
+            const VkDeviceSize to = VkDeviceSize(shader::tsCrowdListBase(tier, c, crowd.maxInstances())) * kRecordBytes;
+            fn.cmdBindTransformFeedbackBuffers(cmd, 0, 1, &lists, &to, &listBytes);
+            const uint32_t query = resources.listQuery(tier, c);
+            vkCmdBeginQuery(cmd, resources.queries(), query, 0);
+            fn.cmdBeginTransformFeedback(cmd, 0, 0, nullptr, nullptr);
+            // A point per survivor, the count the cull pass's query left in
+            // the command.
+            vkCmdDrawIndirect(cmd, resources.draws().handle(), resources.binDraw(c), 1, 0);
+            fn.cmdEndTransformFeedback(cmd, 0, 0, nullptr, nullptr);
+            vkCmdEndQuery(cmd, resources.queries(), query);
+        }
+    }
+    streamout::endStreamOut(cmd);
+
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT, VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT,
+                       VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                       VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT);
+    copyCounts(cmd, crowd, resources);
+}
+
+void StreamoutCrowdBinPass::copyCounts(VkCommandBuffer cmd, GpuCrowd& crowd, StreamoutCrowdResources& resources) {
+    const uint32_t creatures = uint32_t(crowd.creatures().size());
+    resources.copyResults(cmd, resources.listQuery(0, 0), TS_LOD_TIERS * creatures);
+    // Each list's count goes to its indexed draw's instance count; a near
+    // list's also to the slots pass's vertex count and the skin pass's
+    // instance count.
+    constexpr VkDeviceSize kWord = sizeof(uint32_t);
+    std::vector<VkBufferCopy> toArgs, toDraws;
+    for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier)
+        for (uint32_t c = 0; c < creatures; ++c) {
+            const VkDeviceSize written = StreamoutCrowdResources::resultOffset(resources.listQuery(tier, c));
+            const uint32_t list = tier * TS_CROWD_MAX_CHARACTERS + c;
+            toArgs.push_back({written, (list * TS_CROWD_ARG_DRAW_WORDS + 1) * kWord, kWord});
+            if (tier != TS_LOD_NEAR) continue;
+            toDraws.push_back({written, resources.slotsDraw(c) + offsetof(VkDrawIndirectCommand, vertexCount), kWord});
+            toDraws.push_back({written, resources.skinDraw(c) + offsetof(VkDrawIndirectCommand, instanceCount), kWord});
+        }
+    vkCmdCopyBuffer(cmd, resources.counts().handle(), crowd.args().handle(), uint32_t(toArgs.size()), toArgs.data());
+    vkCmdCopyBuffer(cmd, resources.counts().handle(), resources.draws().handle(), uint32_t(toDraws.size()),
+                    toDraws.data());
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                       VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT);
+}
+
+} // namespace tessera::backends
