@@ -1,5 +1,7 @@
 #include "DemoOptions.h"
 
+#include "CrowdLod.h"
+
 #include "tessera/crowd/Crowd.h"
 #include "tessera/lod/LodPolicy.h"
 
@@ -156,11 +158,13 @@ Scene:
                         far one drawn with the simplest mesh (default 64),
                         the cage in between
   --lod-budget T        at most T tessellated triangles a frame (default:
-                        24000000 on a GPU, 150000 on lavapipe)
+                        24000000 on a GPU, 100000 on lavapipe)
   --lod-near-max N      at most N tessellated characters a frame (default:
-                        1024 on a GPU, 4 on lavapipe)
+                        256 on a GPU, 4 on lavapipe)
   --lod-middle-max N    at most N characters drawn as their untessellated
                         cage a frame (the rest take the far mesh)
+  --lod-fade N          frames a tier change cross-fades over (dithered;
+                        default 8, 0: switch at once, at most 63)
   --lod-edge PX         tessellate near characters to edges of about PX
                         pixels (default 2 on a GPU, 3 on lavapipe)
   --lod-far-triangles N the far tier's mesh simplified to at most N
@@ -337,6 +341,12 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
             auto n = parseCount(flag, text, 0, 10000000);
             if (!n) return n.error();
             o.lodMiddleMax = n.value();
+        }
+        else if (flag == "--lod-fade") {
+            TESSERA_TAKE(text);
+            auto n = parseCount(flag, text, 0, TS_LOD_MAX_FADE_FRAMES);
+            if (!n) return n.error();
+            o.lodFade = n.value();
         }
         else if (flag == "--lod-edge") {
             TESSERA_TAKE(text);

@@ -93,6 +93,7 @@ struct DemoOptions {
     std::optional<uint32_t> lodNearMax;
     std::optional<uint32_t> lodMiddleMax;      ///< --lod-middle-max N: untessellated cages per frame
     std::optional<float> lodEdge;              ///< --lod-edge PX: the near tier's tessellated edge in pixels
+    std::optional<uint32_t> lodFade;           ///< --lod-fade N: cross-fade frames (0: instant)
     std::optional<uint32_t> lodFarTriangles;   ///< --lod-far-triangles N: the far mesh's triangles at most
     bool lodColors = false;             ///< --lod-colors: tint instances by LOD tier
 

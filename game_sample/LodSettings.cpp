@@ -19,6 +19,7 @@ Result<lod::LodPolicy> lodPolicyFor(const DemoOptions& options, lod::DeviceClass
     if (options.lodNearMax) policy.budget.maxNearInstances = *options.lodNearMax;
     if (options.lodMiddleMax) policy.budget.maxMiddleInstances = *options.lodMiddleMax;
     if (options.lodEdge) policy.targetEdgePixels = *options.lodEdge;
+    if (options.lodFade) policy.fadeFrames = *options.lodFade;
     if (options.lodFarTriangles) policy.farMeshTriangles = *options.lodFarTriangles;
     if (Status ok = policy.validate(); !ok) return ok.error();
     return policy;

@@ -15,7 +15,7 @@ namespace tessera::lod {
 struct LodBudget {
     static constexpr uint32_t kUnlimited = std::numeric_limits<uint32_t>::max();
     /// Instances drawn tessellated (the near tier).
-    uint32_t maxNearInstances = 1024;
+    uint32_t maxNearInstances = 256;
     /// Triangles the near tier's tessellation makes in one frame. When even
     /// the largest instance alone would exceed it, the frame's level cap
     /// comes down until it fits (to the bare cage, level 1).
