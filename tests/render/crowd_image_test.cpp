@@ -39,16 +39,17 @@ struct Recording {
     std::vector<Rgba8Image> frames;
 };
 
-/// One agent alone on black, the camera dollying in from 24 m to 2.5 m over
-/// `frames` frames, every frame recorded; tiers tinted (--lod-colors) so a
-/// tier change recolours the creature.
+/// One agent alone on black, the camera dollying slowly in from 8 m to 5 m
+/// over `frames` frames (so the motion changes few pixels a frame), every
+/// frame recorded; tiers tinted (--lod-colors) so a tier change recolours the
+/// creature; the near threshold is crossed half way.
 Recording recordDolly(const std::string& name, const std::vector<std::string>& extra, uint32_t frames) {
     const std::filesystem::path dir = testOutputDir("crowd_image") / name;
     std::filesystem::remove_all(dir);
     std::vector<std::string> args = {"--scene",    "crowd", "--agents",      "1",     "--meteors",    "0",
                                      "--backend",  "hulldomain", "--heightmap", smallCrowdTerrain(), "--no-terrain",
-                                     "--clear-color", "0,0,0", "--lod-colors", "--orbit-distance", "24:2.5",
-                                     "--lod-near", "48", "--lod-far", "16", "--width", "192", "--height", "108",
+                                     "--clear-color", "0,0,0", "--lod-colors", "--orbit-distance", "8:5",
+                                     "--lod-near", "55", "--lod-far", "10", "--width", "320", "--height", "180",
                                      "--frames", std::to_string(frames), "--validation", "--record", dir.string()};
     args.insert(args.end(), extra.begin(), extra.end());
     Recording r;
@@ -90,50 +91,77 @@ TEST(CrowdImages, ATierChangeCrossFadesRatherThanPops) {
     const size_t popped = worstFrameChange(instant), blended = worstFrameChange(faded);
     std::cout << "[crowd fade] the worst frame changes " << popped << " px switching at once, " << blended
               << " px cross-fading over 8 frames\n";
-    // The creature ends up a few thousand pixels large: an instant switch
-    // there is a large step, well above the dolly's own frame-to-frame change.
-    EXPECT_GT(popped, 400u) << "no tier change seen: " << instant.command;
+    // The creature covers 200 to 600 pixels: an instant switch recolours it
+    // at once, well above the slow dolly's own change.
+    EXPECT_GT(popped, 200u) << "no tier change seen: " << instant.command;
     EXPECT_LT(double(blended), 0.6 * double(popped)) << faded.command;
 }
 
-// The near tier drawn instanced at every level has no cracks: agents alone
-// on magenta, every backend, every level forced (--character-level), with
-// and without displacement; no magenta pixel enclosed by a creature.
+// The near tier drawn instanced at every level has no cracks: agents on
+// magenta, every backend, every level forced (--character-level), with and
+// without displacement. A crowd encloses background by itself (an arm
+// against a body, one creature behind another), so a hole counts as a crack
+// only where the bare cage (level 1, no displacement: a closed mesh drawn as
+// its triangles) encloses none: no hole of two pixels or more may appear away
+// from the reference's holes.
 class CrowdNearCracks : public ::testing::TestWithParam<std::string> {};
+
+namespace {
+
+DemoShot crowdOnMagenta(const std::string& backend, const std::string& name, const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"--scene",     "crowd",  "--agents",       "24",      "--meteors",
+                                     "0",           "--backend", backend,       "--heightmap", smallCrowdTerrain(),
+                                     "--no-terrain", "--clear-color", "1,0,1", "--orbit-distance", "3",
+                                     "--width",     "320",    "--height",       "180",     "--frames", "2"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return runDemoShot(args, testOutputDir("crowd_image") / ("cracks_" + name + ".png"));
+}
+
+bool overlaps(const HoleComponent& a, const HoleComponent& b, uint32_t margin) {
+    return a.minX <= b.maxX + margin && b.minX <= a.maxX + margin && a.minY <= b.maxY + margin &&
+           b.minY <= a.maxY + margin;
+}
+
+} // namespace
 
 TEST_P(CrowdNearCracks, NoHolesAtAnyLevel) {
     const std::string backend = GetParam();
+    const DemoShot bare = crowdOnMagenta(backend, backend + "_bare", {"--character-level", "1", "--no-displacement"});
+    ASSERT_EQ(bare.result.exitCode, 0) << bare.command << "\n" << bare.result.output;
+    ASSERT_TRUE(bare.image) << bare.readError;
+    const HoleReport reference = findHoles(*bare.image);
     const std::vector<std::vector<std::string>> cases = {
         {"--character-level", "1"},    {"--character-level", "3.7"},  {"--character-level", "7.5"},
         {"--character-level", "14.99"}, {"--character-level", "7.5", "--no-displacement"}};
     for (const auto& extra : cases) {
         std::string name = backend;
-        for (const std::string& a : extra) name += "_" + a.substr(a.find_first_not_of('-'));
+        for (const std::string& a : extra) {
+            name += '_';
+            name += a.substr(a.find_first_not_of('-'));
+        }
         SCOPED_TRACE(name);
-        std::vector<std::string> args = {"--scene",     "crowd",  "--agents",       "24",      "--meteors",
-                                         "0",           "--backend", backend,       "--heightmap", smallCrowdTerrain(),
-                                         "--no-terrain", "--clear-color", "1,0,1", "--orbit-distance", "3",
-                                         "--width",     "320",    "--height",       "180",     "--frames", "2"};
-        args.insert(args.end(), extra.begin(), extra.end());
-        const DemoShot shot = runDemoShot(args, testOutputDir("crowd_image") / ("cracks_" + name + ".png"));
+        const DemoShot shot = crowdOnMagenta(backend, name, extra);
         ASSERT_EQ(shot.result.exitCode, 0) << shot.command << "\n" << shot.result.output;
         EXPECT_TRUE(validationClean(shot.result)) << shot.result.output;
         ASSERT_TRUE(shot.image) << shot.readError;
         const HoleReport holes = findHoles(*shot.image);
         const size_t drawn = size_t(320) * 180 - holes.magenta;
-        std::cout << "[crowd cracks] " << name << ": creatures cover " << drawn << " px, " << holes.describe() << "\n";
+        size_t cracks = 0;
+        for (const HoleComponent& h : holes.holes) {
+            if (h.pixels < 2) continue;
+            bool enclosedByTheCage = false;
+            for (const HoleComponent& r : reference.holes) enclosedByTheCage = enclosedByTheCage || overlaps(h, r, 2);
+            if (!enclosedByTheCage) ++cracks;
+        }
+        std::cout << "[crowd cracks] " << name << ": creatures cover " << drawn << " px, " << holes.describe()
+                  << "; the bare cage's: " << reference.holes.size() << "; new: " << cracks << "\n";
         EXPECT_GT(drawn, 2000u) << "too little drawn to judge: " << shot.command;
-        // As the characters' crack test allows for a concave crease's
-        // back-face pixel: isolated one-pixel holes, never a crack.
-        size_t larger = 0;
-        for (const HoleComponent& h : holes.holes) larger += h.pixels > 1 ? 1 : 0;
-        EXPECT_EQ(larger, 0u) << holes.describe() << " " << shot.command;
-        EXPECT_LE(holes.holes.size(), 2u) << holes.describe() << " " << shot.command;
+        EXPECT_EQ(cracks, 0u) << holes.describe() << " " << shot.command;
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryBackend, CrowdNearCracks, ::testing::Values("hulldomain", "r2vb", "streamout"),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& param) { return param.param; });
 
 // The same crowd, view and frame on the three backends: the emulated ones'
 // images within the terrain parity test's tolerance of hulldomain's, every
@@ -159,7 +187,8 @@ TEST(CrowdImages, BackendsDrawTheSameCrowd) {
         ASSERT_TRUE(other.image) << other.readError;
         const auto diff = testOutputDir("crowd_image") / (std::string("parity_") + backend + ".diff.png");
         const ImageComparison cmp = compareImages(*other.image, *reference.image, tolerance, diff.string());
-        std::cout << "[crowd parity] " << backend << " vs hulldomain: " << cmp.message << "\n";
+        std::cout << "[crowd parity] " << backend << " vs hulldomain: " << cmp.differingFraction * 100.0
+                  << "% of pixels differ by more than 8/255, mean difference " << cmp.meanDifference << "\n";
         EXPECT_TRUE(cmp.match) << cmp.message << " " << other.command;
     }
 }
