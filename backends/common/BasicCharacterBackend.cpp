@@ -121,8 +121,7 @@ void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& dra
 
 Result<backend::CrowdHandle> BasicCharacterBackend::createCrowd(const backend::CrowdDesc&) {
     return fail("backend ", capabilities(nullptr).name,
-                " does not draw instanced crowds yet (GPU culling and LOD binning run on hulldomain); draw the crowd "
-                "with drawCharacters");
+                " draws no instanced crowds (BackendCapabilities::crowd); draw the crowd with drawCharacters");
 }
 
 Result<backend::CrowdTiers> BasicCharacterBackend::readCrowdTiers(backend::CrowdHandle) {

@@ -55,9 +55,10 @@ public:
     void drawCharacters(const backend::CharacterDrawInfo& draw) override;
     void shutdown() override;
 
-    // Instanced crowds: a backend that culls and bins them on the GPU
-    // overrides these (and sets BackendCapabilities::crowd); the others
-    // refuse, and hosts draw their crowds through drawCharacters.
+    // Instanced crowds: every GPU backend culls and bins them on the GPU
+    // with its own technique and overrides these (and sets
+    // BackendCapabilities::crowd); a backend derived from this class that
+    // does not refuses, and hosts draw its crowds through drawCharacters.
     Result<backend::CrowdHandle> createCrowd(const backend::CrowdDesc& desc) override;
     void destroyCrowd(backend::CrowdHandle) override {}
     void drawCrowd(backend::CrowdHandle, const backend::CrowdDrawInfo&) override {}

@@ -201,6 +201,7 @@ public:
         mCrowdMesh.record(*mFrame, *crowd, descriptors);
         mReport.passes += R2vbCrowdBinningPass::kPasses + R2vbCrowdNearPass::kPasses + TS_LOD_TIERS;
         mReport.intermediateBytes += crowd->bytes() + targets.bytes();
+        mReport.crowdBytes += crowd->bytes() + targets.bytes();
     }
 
     Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle handle) override {

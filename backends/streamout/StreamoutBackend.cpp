@@ -128,6 +128,7 @@ public:
         mCrowds->recordDraws(*mFrame, *crowd, mFrameUniforms, uniforms);
         mReport.passes += StreamoutCrowdRenderer::kPasses;
         mReport.intermediateBytes += mCrowds->bytes(handle);
+        mReport.crowdBytes += mCrowds->bytes(handle);
     }
 
     Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle handle) override {

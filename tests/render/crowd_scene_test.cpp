@@ -75,3 +75,35 @@ TEST(CrowdDemoScene, BadAgentCountsFailWithOneLine) {
     expectOneLineError({"--agents", "1000000", "--backend", "null", "--heightmap", smallCrowdTerrain()}, 1,
                        "crowd layout:");
 }
+
+// --model files join the crowd when they can walk; one that cannot is one
+// line naming the file and why (no animation clip; a clip that covers no
+// ground, as a rigid, node-animated box or a bending cylinder's), and too many
+// creatures for one crowd is refused.
+TEST(CrowdDemoScene, ModelsJoinTheCrowdOrFailClearly) {
+    const std::string terrain = smallCrowdTerrain();
+    const auto model = [](const std::string& relative) { return (sharedTestdataDir() / "gltf" / relative).string(); };
+    const std::vector<std::string> walker = {"--scene", "crowd", "--backend", "null", "--heightmap", terrain,
+                                             "--agents", "200",  "--frames",  "2",    "--model",
+                                             model("CesiumMan/glTF-Binary/CesiumMan.glb")};
+    const ProcessResult ok = runDemo(walker);
+    EXPECT_EQ(ok.exitCode, 0) << demoCommandLine(walker) << "\n" << ok.output;
+    EXPECT_NE(ok.output.find("CesiumMan.glb"), std::string::npos) << "the gait line names every creature: " << ok.output;
+
+    const std::vector<std::string> base = {"--scene", "crowd", "--backend", "null", "--heightmap", terrain,
+                                           "--agents", "200", "--frames", "1"};
+    auto with = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args = base;
+        args.insert(args.end(), extra.begin(), extra.end());
+        return args;
+    };
+    expectOneLineError(with({"--model", model("Box/glTF-Binary/Box.glb")}), 1, "Box.glb: has no animation clip");
+    expectOneLineError(with({"--model", model("BoxAnimated/glTF-Binary/BoxAnimated.glb")}), 1,
+                       "BoxAnimated.glb: its walk clip covers no ground");
+    expectOneLineError(with({"--model", model("RiggedSimple/glTF-Binary/RiggedSimple.glb")}), 1,
+                       "RiggedSimple.glb: its walk clip covers no ground");
+    expectOneLineError(with({"--model", "/nonexistent/walker.glb"}), 1, "/nonexistent/walker.glb");
+    std::vector<std::string> many;
+    for (int i = 0; i < 6; ++i) many.insert(many.end(), {"--model", model("CesiumMan/glTF-Binary/CesiumMan.glb")});
+    expectOneLineError(with(many), 1, "a crowd mixes at most 8 creatures");
+}
