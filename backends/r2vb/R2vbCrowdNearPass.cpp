@@ -64,7 +64,7 @@ void R2vbCrowdNearPass::record(gpu::FrameContext& frame, crowd::FrameInputs& in)
         gpu::PassScope pass(frame, "crowd.nearCommands");
         writeCommands(cmd, in);
     }
-    gpu::PassScope pass(frame, "crowd.nearSkin");
+    gpu::PassScope pass(frame, "crowd.skin");
     skinCages(cmd, in);
 }
 
