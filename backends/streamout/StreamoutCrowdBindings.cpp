@@ -30,9 +30,8 @@ gpu::PipelineLayout StreamoutCrowdBindings::layout(gpu::Device& device) {
 
 StreamoutCrowdBindings::StreamoutCrowdBindings(GpuCrowd& crowd, StreamoutCrowdResources& resources, uint32_t slot,
                                                const gpu::UniformSlice& uniforms)
-    : mUniforms(uniforms.descriptor()),
-      mTexels{crowd.instancesView(slot), crowd.bakedView(), crowd.clipsView(), crowd.nearSlotsView(),
-              resources.cagesView()},
+    : mUniforms(uniforms.descriptor()), mTexels{crowd.instancesView(slot), crowd.bakedView(), crowd.clipsView(),
+                                                crowd.nearSlotsView(), resources.cagesView()},
       mState{VK_NULL_HANDLE, resources.stateRead().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL} {
     mWrites[0] = bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &mUniforms);
     VkWriteDescriptorSet& state = mWrites[1];

@@ -37,7 +37,8 @@ StreamoutCrowdNearPass::StreamoutCrowdNearPass(gpu::Device& device, const gpu::P
     slots.vertexBindings = {{0, kEntryBytes, VK_VERTEX_INPUT_RATE_VERTEX}};
     slots.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32A32_UINT, 0}};
     mSlots = gpu::Pipeline(device, slots);
-    mCommands = gpu::Pipeline(device, pointsDesc(layout, "streamout.crowd.commands", streamout_crowd_commands_vert_spv));
+    mCommands =
+        gpu::Pipeline(device, pointsDesc(layout, "streamout.crowd.commands", streamout_crowd_commands_vert_spv));
     gpu::GraphicsPipelineDesc skin = pointsDesc(layout, "streamout.crowd.skin", streamout_crowd_skin_vert_spv);
     skin.vertexBindings = {{0, kEntryBytes, VK_VERTEX_INPUT_RATE_INSTANCE}};
     skin.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32A32_UINT, 0}};
@@ -50,8 +51,8 @@ void StreamoutCrowdNearPass::record(gpu::FrameContext& frame, GpuCrowd& crowd, S
     recordSkin(frame, crowd, resources, bindings);
 }
 
-void StreamoutCrowdNearPass::recordSlots(gpu::FrameContext& frame, GpuCrowd& crowd,
-                                         StreamoutCrowdResources& resources, const StreamoutCrowdBindings& bindings) {
+void StreamoutCrowdNearPass::recordSlots(gpu::FrameContext& frame, GpuCrowd& crowd, StreamoutCrowdResources& resources,
+                                         const StreamoutCrowdBindings& bindings) {
     gpu::PassScope pass(frame, "crowd.slots");
     VkCommandBuffer cmd = frame.cmd();
     const auto& fn = frame.device().fn();
@@ -69,14 +70,16 @@ void StreamoutCrowdNearPass::recordSlots(gpu::FrameContext& frame, GpuCrowd& cro
     // appends where the last one stopped.
     fn.cmdBeginTransformFeedback(cmd, 0, 0, nullptr, nullptr);
     for (uint32_t c = 0; c < creatures; ++c) {
-        const VkDeviceSize list = VkDeviceSize(shader::tsCrowdListBase(TS_LOD_NEAR, c, crowd.maxInstances())) * kEntryBytes;
+        const VkDeviceSize list =
+            VkDeviceSize(shader::tsCrowdListBase(TS_LOD_NEAR, c, crowd.maxInstances())) * kEntryBytes;
         vkCmdBindVertexBuffers(cmd, 0, 1, &lists, &list);
         vkCmdDrawIndirect(cmd, resources.draws().handle(), resources.slotsDraw(c), 1, 0);
     }
     fn.cmdEndTransformFeedback(cmd, 0, 0, nullptr, nullptr);
     streamout::endStreamOut(cmd);
-    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT, VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT,
-                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
+                       VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
+                       VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 
     // The commands: vertex c * slots + s is command (c, s), 32 bytes each.
     streamout::beginStreamOut(cmd);
@@ -108,13 +111,15 @@ void StreamoutCrowdNearPass::recordSkin(gpu::FrameContext& frame, GpuCrowd& crow
     fn.cmdBeginTransformFeedback(cmd, 0, 0, nullptr, nullptr);
     for (uint32_t c = 0; c < creatures; ++c) {
         bindings.push(frame, *mLayout, TS_LOD_NEAR, c, resources.cageBase(c));
-        const VkDeviceSize list = VkDeviceSize(shader::tsCrowdListBase(TS_LOD_NEAR, c, crowd.maxInstances())) * kEntryBytes;
+        const VkDeviceSize list =
+            VkDeviceSize(shader::tsCrowdListBase(TS_LOD_NEAR, c, crowd.maxInstances())) * kEntryBytes;
         vkCmdBindVertexBuffers(cmd, 0, 1, &lists, &list);
         vkCmdDrawIndirect(cmd, resources.draws().handle(), resources.skinDraw(c), 1, 0);
     }
     fn.cmdEndTransformFeedback(cmd, 0, 0, nullptr, nullptr);
     streamout::endStreamOut(cmd);
-    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT, VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT,
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
+                       VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT,
                        VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT,
                        VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 }

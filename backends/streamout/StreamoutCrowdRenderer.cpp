@@ -33,18 +33,18 @@ Status StreamoutCrowdRenderer::checkCrowd(const GpuCrowd& crowd) const {
         mXfb.maxTransformFeedbackStreamDataSize < kCommandBytes)
         return fail(prefix, "cannot write ", std::to_string(kCommandBytes), " bytes per vertex to one buffer");
     // The largest range a crowd pass binds as one transform-feedback buffer.
-    const VkDeviceSize largest =
-        std::max({VkDeviceSize(crowd.maxInstances()) * sizeof(shader::CrowdListEntry),
-                  VkDeviceSize(crowd.nearSlots()) * crowd.nearStride() * 16,
-                  VkDeviceSize(crowd.creatures().size()) * crowd.nearSlots() * kCommandBytes});
+    const VkDeviceSize largest = std::max({VkDeviceSize(crowd.maxInstances()) * sizeof(shader::CrowdListEntry),
+                                           VkDeviceSize(crowd.nearSlots()) * crowd.nearStride() * 16,
+                                           VkDeviceSize(crowd.creatures().size()) * crowd.nearSlots() * kCommandBytes});
     if (mXfb.maxTransformFeedbackBufferSize < largest)
         return fail(prefix, "binds at most ", std::to_string(mXfb.maxTransformFeedbackBufferSize),
                     " bytes per buffer; this crowd streams ", std::to_string(largest), " into one");
     return {};
 }
 
-Result<backend::CrowdHandle> StreamoutCrowdRenderer::create(
-    const backend::CrowdDesc& desc, const std::function<GpuCharacter*(backend::CharacterHandle)>& find) {
+Result<backend::CrowdHandle>
+StreamoutCrowdRenderer::create(const backend::CrowdDesc& desc,
+                               const std::function<GpuCharacter*(backend::CharacterHandle)>& find) {
     auto handle = mCrowds.create(desc, find, VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT);
     if (!handle) return handle;
     GpuCrowd& crowd = *mCrowds.find(handle.value());

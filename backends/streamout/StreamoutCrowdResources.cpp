@@ -15,14 +15,13 @@ constexpr uint32_t kStateWidth = 1024;
 
 } // namespace
 
-Result<std::unique_ptr<StreamoutCrowdResources>> StreamoutCrowdResources::create(gpu::Device& device,
-                                                                               GpuCrowd& crowd) {
+Result<std::unique_ptr<StreamoutCrowdResources>> StreamoutCrowdResources::create(gpu::Device& device, GpuCrowd& crowd) {
     const uint32_t width = std::clamp(crowd.maxIds(), 1u, kStateWidth);
     const uint32_t height = (crowd.maxIds() + width - 1) / width;
     const uint32_t limit = device.properties().limits.maxImageDimension2D;
     if (height > limit)
-        return Error{"createCrowd: streamout keeps the LOD state of " + std::to_string(crowd.maxIds()) +
-                     " ids in a " + std::to_string(width) + " x " + std::to_string(height) +
+        return Error{"createCrowd: streamout keeps the LOD state of " + std::to_string(crowd.maxIds()) + " ids in a " +
+                     std::to_string(width) + " x " + std::to_string(height) +
                      " render target, more than this device's maxImageDimension2D (" + std::to_string(limit) + ")"};
 
     std::unique_ptr<StreamoutCrowdResources> r(new StreamoutCrowdResources());
@@ -42,9 +41,9 @@ Result<std::unique_ptr<StreamoutCrowdResources>> StreamoutCrowdResources::create
     }
 
     const VkBufferUsageFlags xfb = VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT;
-    r->mSurvivors = gpu::Buffer(device, VkDeviceSize(crowd.maxInstances()) * 16,
-                                xfb | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
-                                "streamout.crowd.survivors");
+    r->mSurvivors =
+        gpu::Buffer(device, VkDeviceSize(crowd.maxInstances()) * 16, xfb | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                    gpu::MemoryUsage::GpuOnly, "streamout.crowd.survivors");
 
     const uint32_t creatures = uint32_t(crowd.creatures().size());
     r->mCreatures = creatures;
@@ -62,8 +61,8 @@ Result<std::unique_ptr<StreamoutCrowdResources>> StreamoutCrowdResources::create
     // {nearStride, near entries, 0, 0}; the counts are copied in every frame.
     std::vector<VkDrawIndirectCommand> draws(3 * creatures, VkDrawIndirectCommand{0, 1, 0, 0});
     for (uint32_t c = 0; c < creatures; ++c) draws[2 * creatures + c] = {crowd.nearStride(), 0, 0, 0};
-    r->mDraws = gpu::Buffer(device, draws.size() * sizeof(VkDrawIndirectCommand),
-                            VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly, "streamout.crowd.draws");
+    r->mDraws = gpu::Buffer(device, draws.size() * sizeof(VkDrawIndirectCommand), VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                            gpu::MemoryUsage::GpuOnly, "streamout.crowd.draws");
     r->mDraws.upload(std::span<const VkDrawIndirectCommand>(draws));
 
     std::vector<shader::CharacterVertex> cages;
@@ -81,8 +80,8 @@ Result<std::unique_ptr<StreamoutCrowdResources>> StreamoutCrowdResources::create
     r->mCages = gpu::Buffer(device, cageBytes, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
                             "streamout.crowd.cages");
     r->mCages.upload(std::span<const shader::CharacterVertex>(cages));
-    r->mCagesView = gpu::BufferView(device, r->mCages, VK_FORMAT_R32G32B32A32_UINT, 0, cageBytes,
-                                    "streamout.crowd.cages.texels");
+    r->mCagesView =
+        gpu::BufferView(device, r->mCages, VK_FORMAT_R32G32B32A32_UINT, 0, cageBytes, "streamout.crowd.cages.texels");
     return r;
 }
 

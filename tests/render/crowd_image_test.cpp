@@ -46,11 +46,35 @@ struct Recording {
 Recording recordDolly(const std::string& name, const std::vector<std::string>& extra, uint32_t frames) {
     const std::filesystem::path dir = testOutputDir("crowd_image") / name;
     std::filesystem::remove_all(dir);
-    std::vector<std::string> args = {"--scene",    "crowd", "--agents",      "1",     "--meteors",    "0",
-                                     "--backend",  "hulldomain", "--heightmap", smallCrowdTerrain(), "--no-terrain",
-                                     "--clear-color", "0,0,0", "--lod-colors", "--orbit-distance", "8:5",
-                                     "--lod-near", "55", "--lod-far", "10", "--width", "320", "--height", "180",
-                                     "--frames", std::to_string(frames), "--validation", "--record", dir.string()};
+    std::vector<std::string> args = {"--scene",
+                                     "crowd",
+                                     "--agents",
+                                     "1",
+                                     "--meteors",
+                                     "0",
+                                     "--backend",
+                                     "hulldomain",
+                                     "--heightmap",
+                                     smallCrowdTerrain(),
+                                     "--no-terrain",
+                                     "--clear-color",
+                                     "0,0,0",
+                                     "--lod-colors",
+                                     "--orbit-distance",
+                                     "8:5",
+                                     "--lod-near",
+                                     "55",
+                                     "--lod-far",
+                                     "10",
+                                     "--width",
+                                     "320",
+                                     "--height",
+                                     "180",
+                                     "--frames",
+                                     std::to_string(frames),
+                                     "--validation",
+                                     "--record",
+                                     dir.string()};
     args.insert(args.end(), extra.begin(), extra.end());
     Recording r;
     r.command = demoCommandLine(args);
@@ -69,7 +93,8 @@ Recording recordDolly(const std::string& name, const std::vector<std::string>& e
 /// The most pixels any frame changes from the one before.
 size_t worstFrameChange(const Recording& r) {
     size_t worst = 0;
-    for (size_t f = 1; f < r.frames.size(); ++f) worst = std::max(worst, changedPixels(r.frames[f - 1], r.frames[f], 24));
+    for (size_t f = 1; f < r.frames.size(); ++f)
+        worst = std::max(worst, changedPixels(r.frames[f - 1], r.frames[f], 24));
     return worst;
 }
 
@@ -109,10 +134,27 @@ class CrowdNearCracks : public ::testing::TestWithParam<std::string> {};
 namespace {
 
 DemoShot crowdOnMagenta(const std::string& backend, const std::string& name, const std::vector<std::string>& extra) {
-    std::vector<std::string> args = {"--scene",     "crowd",  "--agents",       "24",      "--meteors",
-                                     "0",           "--backend", backend,       "--heightmap", smallCrowdTerrain(),
-                                     "--no-terrain", "--clear-color", "1,0,1", "--orbit-distance", "3",
-                                     "--width",     "320",    "--height",       "180",     "--frames", "2"};
+    std::vector<std::string> args = {"--scene",
+                                     "crowd",
+                                     "--agents",
+                                     "24",
+                                     "--meteors",
+                                     "0",
+                                     "--backend",
+                                     backend,
+                                     "--heightmap",
+                                     smallCrowdTerrain(),
+                                     "--no-terrain",
+                                     "--clear-color",
+                                     "1,0,1",
+                                     "--orbit-distance",
+                                     "3",
+                                     "--width",
+                                     "320",
+                                     "--height",
+                                     "180",
+                                     "--frames",
+                                     "2"};
     args.insert(args.end(), extra.begin(), extra.end());
     return runDemoShot(args, testOutputDir("crowd_image") / ("cracks_" + name + ".png"));
 }
@@ -130,9 +172,11 @@ TEST_P(CrowdNearCracks, NoHolesAtAnyLevel) {
     ASSERT_EQ(bare.result.exitCode, 0) << bare.command << "\n" << bare.result.output;
     ASSERT_TRUE(bare.image) << bare.readError;
     const HoleReport reference = findHoles(*bare.image);
-    const std::vector<std::vector<std::string>> cases = {
-        {"--character-level", "1"},    {"--character-level", "3.7"},  {"--character-level", "7.5"},
-        {"--character-level", "14.99"}, {"--character-level", "7.5", "--no-displacement"}};
+    const std::vector<std::vector<std::string>> cases = {{"--character-level", "1"},
+                                                         {"--character-level", "3.7"},
+                                                         {"--character-level", "7.5"},
+                                                         {"--character-level", "14.99"},
+                                                         {"--character-level", "7.5", "--no-displacement"}};
     for (const auto& extra : cases) {
         std::string name = backend;
         for (const std::string& a : extra) {
@@ -170,10 +214,18 @@ INSTANTIATE_TEST_SUITE_P(EveryBackend, CrowdNearCracks, ::testing::Values("hulld
 TEST(CrowdImages, BackendsDrawTheSameCrowd) {
     const ImageTolerance tolerance{8, 0.0005, 0.05}; // backend_parity_test's kParityTolerance
     auto shot = [](const std::string& backend) {
-        const std::vector<std::string> args = {
-            "--scene",    "crowd", "--agents",   "600",  "--meteors", "0",    "--backend", backend,
-            "--heightmap", smallCrowdTerrain(), "--orbit-distance", "6", "--tess-max", "14.99", "--width", "320",
-            "--height",   "180",   "--frames",   "6",    "--lod-near", "60",  "--lod-far", "24"};
+        const std::vector<std::string> args = {"--scene",          "crowd",
+                                               "--agents",         "600",
+                                               "--meteors",        "0",
+                                               "--backend",        backend,
+                                               "--heightmap",      smallCrowdTerrain(),
+                                               "--orbit-distance", "6",
+                                               "--tess-max",       "14.99",
+                                               "--width",          "320",
+                                               "--height",         "180",
+                                               "--frames",         "6",
+                                               "--lod-near",       "60",
+                                               "--lod-far",        "24"};
         return runDemoShot(args, testOutputDir("crowd_image") / ("parity_" + backend + ".png"));
     };
     const DemoShot reference = shot("hulldomain");

@@ -89,9 +89,9 @@ TEST(TrianglePatternLibrary, ClassesCountTheTessellatorsTriangles) {
     const TrianglePatternLibrary& library = TrianglePatternLibrary::fractionalOdd();
     for (float level = 1.0f; level <= 14.99f; level += 0.37f) {
         const uint32_t k = shader::tsEmuTriangleClass(shader::tsEmuTriangleLevel(level));
-        EXPECT_EQ(library.classes()[k].indexCount / 3,
-                  Tessellator::countTriangles(Domain::Triangle, Partitioning::FractionalOdd,
-                                              ContinuousLevel::factors(level)))
+        EXPECT_EQ(
+            library.classes()[k].indexCount / 3,
+            Tessellator::countTriangles(Domain::Triangle, Partitioning::FractionalOdd, ContinuousLevel::factors(level)))
             << level;
     }
     // A negative control: placing a class's codes at a level of another

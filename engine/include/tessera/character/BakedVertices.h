@@ -35,7 +35,6 @@ struct PackingRange {
 /// joints (its bindings are the palette they were baked for). Asserts the
 /// clips are in range.
 std::vector<uint32_t> appendBakedVertices(const CageMesh& mesh, const BakedAnimation& baked, uint32_t firstClip,
-                                          uint32_t endClip, const PackingRange& range,
-                                          std::vector<glm::uvec4>& texels);
+                                          uint32_t endClip, const PackingRange& range, std::vector<glm::uvec4>& texels);
 
 } // namespace tessera::character

@@ -19,7 +19,7 @@ class TrianglePatternLibrary {
 public:
     /// Where one class lies in codes() and indices().
     struct Class {
-        uint32_t firstCode = 0;  ///< the class's first point code (an indexed draw's vertexOffset)
+        uint32_t firstCode = 0; ///< the class's first point code (an indexed draw's vertexOffset)
         uint32_t codeCount = 0;
         uint32_t firstIndex = 0; ///< the class's first index (3 per triangle, local to its codes)
         uint32_t indexCount = 0;
