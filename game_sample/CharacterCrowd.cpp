@@ -64,6 +64,16 @@ Result<std::unique_ptr<CharacterCrowd>> CharacterCrowd::load(const DemoOptions& 
     for (const std::string& model : options.models)
         if (Status ok = crowd->mAssets.add(model); !ok) return ok.error();
     crowd->populate(options, froblins, cesium, firstModel);
+    // The same path as the crowd scene: every member an instance of an
+    // instanced crowd (clips baked, culled and binned on the GPU), unless
+    // the single-pass path is asked for (the instanced near tier is
+    // two-pass) or more creatures are mixed than one crowd holds.
+    if (options.characterPath == backend::CharacterPath::TwoPass &&
+        crowd->mAssets.size() <= TS_CROWD_MAX_CHARACTERS && !crowd->mMembers.empty()) {
+        auto instanced = InstancedCrowd::create(crowd->mAssets);
+        if (!instanced) return instanced.error();
+        crowd->mInstanced = std::move(instanced.value());
+    }
     return crowd;
 }
 
@@ -146,6 +156,10 @@ void CharacterCrowd::frameModels(uint32_t firstModel) {
 void CharacterCrowd::update(double seconds, const scene::Camera& camera, const CharacterLevels& levels) {
     TESSERA_CPU_SCOPE("characters.animate");
     mPoser.begin(camera, levels);
+    if (mInstancedActive) {
+        mPoser.finish(mAssets);
+        return updateInstances(seconds, camera, levels);
+    }
     for (uint32_t id = 0; id < mMembers.size(); ++id) {
         const Member& m = mMembers[id];
         glm::vec2 at = m.anchor;
@@ -162,6 +176,41 @@ void CharacterCrowd::update(double seconds, const scene::Camera& camera, const C
         mPoser.offer(id, m.asset, world, m.clip, float(seconds) + m.clipOffset);
     }
     mPoser.finish(mAssets);
+}
+
+CharacterCrowd::Placement CharacterCrowd::placementAt(const Member& m, double seconds) const {
+    glm::vec2 at = m.anchor;
+    float heading = m.angle;
+    if (m.radius > 0.0f) {
+        const float theta = m.angle + m.speed / m.radius * float(seconds);
+        at += m.radius * glm::vec2(std::cos(theta), std::sin(theta));
+        // Facing along the circle: +Z (glTF's forward) turned onto the tangent.
+        const glm::vec2 tangent = (m.speed < 0.0f ? -1.0f : 1.0f) * glm::vec2(-std::sin(theta), std::cos(theta));
+        heading = std::atan2(tangent.x, tangent.y);
+    }
+    return {glm::vec3(at.x, mTerrain->heightAt(at.x, at.y), at.y), heading};
+}
+
+void CharacterCrowd::updateInstances(double seconds, const scene::Camera& camera, const CharacterLevels& levels) {
+    mInstanced->begin(mMembers.size());
+    for (uint32_t id = 0; id < mMembers.size(); ++id) {
+        const Member& m = mMembers[id];
+        const Placement place = placementAt(m, seconds);
+        const scene::Aabb& box = mAssets[m.asset].box;
+        const glm::vec3 centre = box.center();
+        const uint32_t clip = mInstanced->bakedClip(m.asset, m.clip);
+        shader::CrowdInstance instance;
+        // A sphere holding the animated box at any heading (as the crowd's).
+        instance.sphere = glm::vec4(place.feet + glm::vec3(0.0f, centre.y, 0.0f),
+                                    glm::length(box.extents()) + glm::length(glm::vec2(centre.x, centre.z)));
+        instance.placement = glm::vec4(place.feet, place.heading);
+        instance.animation = glm::vec4(mInstanced->phase(clip, float(seconds) + m.clipOffset), 1.0f, 0.0f, 0.0f);
+        instance.ids = glm::uvec4(id, m.asset, clip, 0xffffffffu);
+        mInstanced->set(id, instance);
+    }
+    lod::LodPolicy policy = levels.lod;
+    policy.fixedLevel = levels.fixedLevel.value_or(0.0f);
+    mInstanced->select(lod::LodView::fromCamera(camera, levels.viewportHeight, levels.maxLevel), policy);
 }
 
 } // namespace tessera::demo

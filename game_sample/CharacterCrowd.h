@@ -34,6 +34,11 @@ public:
     /// items (levels: CharacterPoser).
     void update(double seconds, const scene::Camera& camera, const CharacterLevels& levels) override;
     std::span<const backend::CharacterDrawItem> items() const override { return mPoser.items(); }
+    /// The characters drawn as one instanced crowd (null with
+    /// --character-path single-pass or more creatures than a crowd mixes).
+    InstancedCrowd* instancedCrowd() override { return mInstanced.get(); }
+    void useInstancedCrowd() override { mInstancedActive = mInstanced != nullptr; }
+    uint32_t instanceCapacity() const override { return uint32_t(mMembers.size()); }
 
     /// Where the crowd gathers (on the ground), for the camera.
     glm::vec3 site() const { return mSite; }
@@ -55,7 +60,16 @@ private:
         glm::vec2 anchor{0.0f};  ///< circle centre or standing point (x, z)
     };
 
+    struct Placement {
+        glm::vec3 feet{0.0f};
+        float heading = 0.0f;
+    };
+
     CharacterCrowd() = default;
+    /// Where member `m` stands and faces at `seconds`.
+    Placement placementAt(const Member& m, double seconds) const;
+    /// Every member an instance, and the LOD manager's selection.
+    void updateInstances(double seconds, const scene::Camera& camera, const CharacterLevels& levels);
     void populate(const DemoOptions& options, uint32_t froblins, uint32_t cesium, uint32_t firstModel);
     /// Points the orbit at the --model files from `firstModel` on so that
     /// they fit the view whatever their units (unless --orbit-distance).
@@ -64,6 +78,8 @@ private:
     const terrain::Terrain* mTerrain = nullptr;
     CharacterAssets mAssets;
     CharacterPoser mPoser;
+    std::unique_ptr<InstancedCrowd> mInstanced;
+    bool mInstancedActive = false;
     std::vector<Member> mMembers;
     glm::vec3 mSite{0.0f};
     CameraOrbit mOrbit;

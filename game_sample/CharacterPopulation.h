@@ -38,6 +38,8 @@ public:
     /// From now on update() fills instancedCrowd() instead of items() (the
     /// backend made the crowd).
     virtual void useInstancedCrowd() {}
+    /// The most instances instancedCrowd() will have in a frame.
+    virtual uint32_t instanceCapacity() const { return 0; }
 };
 
 } // namespace tessera::demo

@@ -31,6 +31,8 @@ public:
 
     /// The global baked clip of asset `asset`'s clip `clip` (-1: rest pose).
     uint32_t bakedClip(uint32_t asset, int clip) const;
+    /// The phase `seconds` into global baked clip `clip` (character::bakedPhase).
+    float phase(uint32_t clip, float seconds) const { return character::bakedPhase(mBaked.clips[clip], seconds); }
 
     /// Starts a frame of `count` instances (set each with set()).
     void begin(size_t count);

@@ -43,11 +43,8 @@ Result<std::unique_ptr<SceneRun>> SceneRun::create(const DemoOptions& options, u
         // elsewhere.
         InstancedCrowd* instanced = characters->instancedCrowd();
         if (instanced && session.capabilities().crowd) {
-            const SimulatedCrowd* simulated = run->mScene->simulatedCrowd();
-            const uint32_t agents = simulated ? simulated->crowd().stats().agents : 0;
-            if (Status ok =
-                    session.createCrowd(instanced->desc(characters->assets(), std::max(agents, 1u), run->mLodPolicy));
-                !ok)
+            const uint32_t capacity = std::max(characters->instanceCapacity(), 1u);
+            if (Status ok = session.createCrowd(instanced->desc(characters->assets(), capacity, run->mLodPolicy)); !ok)
                 return ok.error();
             characters->useInstancedCrowd();
             run->mInstanced = instanced;

@@ -57,6 +57,7 @@ public:
     void update(double seconds, const scene::Camera& camera, const CharacterLevels& levels) override;
     InstancedCrowd* instancedCrowd() override { return mInstanced.get(); }
     void useInstancedCrowd() override { mInstancedActive = mInstanced != nullptr; }
+    uint32_t instanceCapacity() const override { return mCrowd->stats().agents; }
     std::span<const backend::CharacterDrawItem> items() const override { return mPoser.items(); }
     /// Circling the spawn's centre (--orbit-distance, default 30 m), high
     /// enough to look over the agents.
