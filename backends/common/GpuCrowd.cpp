@@ -116,7 +116,9 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
     crowd->mState = gpu::Buffer(device, VkDeviceSize(desc.maxIds) * sizeof(uint32_t), storage | dst,
                                 gpu::MemoryUsage::GpuOnly, "crowd.lodState");
     crowd->mLists =
-        gpu::Buffer(device, VkDeviceSize(TS_CROWD_LISTS) * desc.maxInstances * sizeof(shader::CrowdListEntry),
+        gpu::Buffer(device,
+                    VkDeviceSize(TS_LOD_TIERS) * crowd->mCreatures.size() * desc.maxInstances *
+                        sizeof(shader::CrowdListEntry),
                     written | vertex, gpu::MemoryUsage::GpuOnly, "crowd.tierLists");
     crowd->mArgs =
         gpu::Buffer(device, TS_CROWD_ARG_WORDS * sizeof(uint32_t), written | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
@@ -182,7 +184,7 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
             cmd[1] = 0;
             cmd[2] = far ? k.farFirstIndex : k.cageFirstIndex;
             cmd[3] = 0;
-            cmd[4] = shader::tsCrowdListBase(tier, c, desc.maxInstances);
+            cmd[4] = shader::tsCrowdListBase(tier, c, uint32_t(crowd->mCreatures.size()), desc.maxInstances);
         }
     args[TS_CROWD_ARG_DISPATCH + 1] = 1;
     args[TS_CROWD_ARG_DISPATCH + 2] = 1;

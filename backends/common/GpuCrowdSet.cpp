@@ -59,7 +59,7 @@ Result<backend::CrowdTiers> GpuCrowdSet::readTiers(backend::CrowdHandle handle) 
     for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier)
         for (uint32_t c = 0; c < crowd->creatures().size(); ++c) {
             const uint32_t n = std::min(listCount(args.data(), tier, c), crowd->maxInstances());
-            const uint32_t base = shader::tsCrowdListBase(tier, c, crowd->maxInstances());
+            const uint32_t base = shader::tsCrowdListBase(tier, c, uint32_t(crowd->creatures().size()), crowd->maxInstances());
             for (uint32_t k = 0; k < n; ++k) tiers.instances[tier].push_back(entries[base + k].instance);
         }
     return crowd->toHostIndices(std::move(tiers));

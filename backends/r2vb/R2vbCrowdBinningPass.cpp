@@ -231,7 +231,7 @@ void R2vbCrowdBinningPass::extractLists(VkCommandBuffer cmd, crowd::FrameInputs&
     const uint32_t regionRows = t.listRegionTexels() / entries.width();
     std::vector<VkBufferImageCopy> regions;
     for (uint32_t u = 0; u < t.listCount(); ++u) {
-        const uint32_t base = shader::tsCrowdListBase(u / creatures, u % creatures, c.maxInstances());
+        const uint32_t base = shader::tsCrowdListBase(u / creatures, u % creatures, creatures, c.maxInstances());
         crowd::appendCopy(regions, entries, u * regionRows, c.maxInstances(),
                           VkDeviceSize(base) * sizeof(shader::CrowdListEntry));
     }

@@ -55,7 +55,7 @@ void StreamoutCrowdBinPass::record(gpu::FrameContext& frame, GpuCrowd& crowd, St
             // no vertices), so every result is available to copy.
             const VkDeviceSize from = ranges[c].y > 0 ? VkDeviceSize(ranges[c].x) * kRecordBytes : 0;
             vkCmdBindVertexBuffers(cmd, 0, 1, &survivors, &from);
-            const VkDeviceSize to = VkDeviceSize(shader::tsCrowdListBase(tier, c, crowd.maxInstances())) * kRecordBytes;
+            const VkDeviceSize to = VkDeviceSize(shader::tsCrowdListBase(tier, c, creatures, crowd.maxInstances())) * kRecordBytes;
             fn.cmdBindTransformFeedbackBuffers(cmd, 0, 1, &lists, &to, &listBytes);
             const uint32_t query = resources.listQuery(tier, c);
             vkCmdBeginQuery(cmd, resources.queries(), query, 0);

@@ -123,9 +123,10 @@ TS_INLINE uint tsCrowdNearCommandBase(uint creature, uint slot, uint nearSlots) 
     return (creature * nearSlots + slot) * TS_CROWD_NEAR_COMMAND_WORDS;
 }
 
-/// The region of list (tier, creature) in the lists buffer.
-TS_INLINE uint tsCrowdListBase(uint tier, uint creature, uint capacity) {
-    return (tier * TS_CROWD_MAX_CHARACTERS + creature) * capacity;
+/// The region of list (tier, creature) in the lists buffer of a crowd of
+/// `creatures` creatures, each list `capacity` entries (the most instances).
+TS_INLINE uint tsCrowdListBase(uint tier, uint creature, uint creatures, uint capacity) {
+    return (tier * creatures + creature) * capacity;
 }
 
 /// The world matrix of an instance: translate to its feet, turn by the
