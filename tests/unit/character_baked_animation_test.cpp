@@ -3,6 +3,8 @@
 // positions, relative to the model's size), the looping wrap, the rest pose,
 // combine's offsets and the memory figure.
 #include "tessera/character/BakedAnimation.h"
+#include "tessera/character/BakedVertices.h"
+#include <CompressedVertex.h>
 #include "tessera/character/Pose.h"
 #include "tessera/character/SkinnedVertex.h"
 
@@ -15,6 +17,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <iostream>
 
 using namespace tessera;
 using namespace tessera::character;
@@ -365,4 +368,49 @@ TEST(BakedAnimation, CombineOffsetsClipsAndCharacters) {
     EXPECT_EQ(bigger.clips[bigger.globalClip(3, bakedClipIndex(0))].frames.x,
               crowd.texelCount() + parts[1].clips[1].frames.x);
     EXPECT_TRUE(combine({}).rows.empty());
+}
+
+// Baked vertex animation (the crowd's middle and far tiers): every frame's
+// vertices are the cage skinned with that frame's baked matrices, in the
+// 128-bit vertex; blending two frames' positions is skinning with the
+// blended matrices, up to the format's quantisation.
+TEST(BakedVertices, FramesAreTheSkinnedCageAndBlendsMatchTheMatrixBlend) {
+    const CharacterAsset leg = makeLeg();
+    const BakedAnimation baked = bakeAnimation(leg);
+    // A box holding the leg in every pose (it swings 0.5 rad from a 1 m hip).
+    const glm::vec3 lo(-1.5f, -1.0f, -1.5f), hi(1.5f, 2.0f, 1.5f);
+    const PackingRange range{lo, hi, glm::vec2(0.0f), glm::vec2(1.0f)};
+    std::vector<glm::uvec4> texels;
+    const std::vector<uint32_t> first = appendBakedVertices(leg.cage, baked, 0, uint32_t(baked.clips.size()), range,
+                                                            texels);
+    ASSERT_EQ(first.size(), baked.clips.size());
+    const size_t n = leg.cage.vertices.size();
+    const uint32_t walk = bakedClipIndex(0);
+    const shader::BakedClip& clip = baked.clips[walk];
+    EXPECT_EQ(texels.size(), size_t(first.back()) + size_t(baked.clips.back().frames.y) * n);
+    // The format's step: a 16-bit grid over the box.
+    const float step = glm::length(hi - lo) / 65535.0f;
+    auto unpack = [&](uint32_t frame, size_t v) {
+        return shader::tsUnpackPosition(texels[first[walk] + frame * n + v], lo, hi);
+    };
+    std::vector<glm::mat4> palette;
+    float worstFrame = 0.0f, worstBlend = 0.0f;
+    for (uint32_t f = 0; f < clip.frames.y; ++f) {
+        // A phase that lands on frame f exactly gives the baked matrices.
+        evaluateBakedPalette(baked, walk, float(f) / float(clip.frames.y - 1), palette);
+        for (size_t v = 0; v < n; ++v)
+            worstFrame = std::max(worstFrame, glm::length(unpack(f, v) - skinVertex(leg.cage.vertices[v], palette).position));
+    }
+    for (uint32_t f = 0; f + 1 < clip.frames.y; ++f) {
+        const float w = 0.3f;
+        evaluateBakedPalette(baked, walk, (float(f) + w) / float(clip.frames.y - 1), palette);
+        for (size_t v = 0; v < n; ++v) {
+            const glm::vec3 blended = glm::mix(unpack(f, v), unpack(f + 1, v), w);
+            worstBlend = std::max(worstBlend, glm::length(blended - skinVertex(leg.cage.vertices[v], palette).position));
+        }
+    }
+    std::cout << "[baked vertices] worst at frames " << worstFrame << " m, between frames " << worstBlend
+              << " m (the format's step " << step << " m)\n";
+    EXPECT_LE(worstFrame, 2.0f * step);
+    EXPECT_LE(worstBlend, 2.0f * step);
 }
