@@ -22,8 +22,7 @@ inline void addFace(ObjShape& shape, std::initializer_list<uint32_t> vertices) {
 inline ObjShape cube() {
     ObjShape s;
     s.name = "cube";
-    s.positions = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                   {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+    s.positions = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
     addFace(s, {0, 3, 2, 1}); // bottom
     addFace(s, {4, 5, 6, 7}); // top
     addFace(s, {0, 1, 5, 4});
@@ -75,9 +74,9 @@ inline ObjShape extraordinaryDisk() {
         double a = degrees * std::numbers::pi / 180.0;
         return glm::vec3(float(radius * std::cos(a)), float(radius * std::sin(a)), float(z));
     };
-    s.positions.push_back({0.0f, 0.0f, 0.5f});                                       // 0: centre
-    for (int i = 0; i < 5; ++i) s.positions.push_back(at(1.0, 72.0 * i, 0.2));       // 1..5: a_i
-    for (int i = 0; i < 5; ++i) s.positions.push_back(at(1.1, 72.0 * i + 36.0, 0.3)); // 6..10: b_i
+    s.positions.push_back({0.0f, 0.0f, 0.5f});                                             // 0: centre
+    for (int i = 0; i < 5; ++i) s.positions.push_back(at(1.0, 72.0 * i, 0.2));             // 1..5: a_i
+    for (int i = 0; i < 5; ++i) s.positions.push_back(at(1.1, 72.0 * i + 36.0, 0.3));      // 6..10: b_i
     for (int i = 0; i < 10; ++i) s.positions.push_back(at(2.2, 36.0 * i, -0.1 * (i % 3))); // 11..20: o_i
     for (uint32_t i = 0; i < 5; ++i) {
         uint32_t a = 1 + i, an = 1 + (i + 1) % 5, b = 6 + i;

@@ -38,8 +38,8 @@ void compare(const LimitPoint& far, const LimitPoint& ref, double diagonal, bool
     ++worst.samples;
     worst.position = std::max(worst.position, glm::length(far.position - ref.position) / diagonal);
     double scale = std::max({glm::length(ref.du), glm::length(ref.dv), 1e-9 * diagonal});
-    worst.derivative = std::max({worst.derivative, glm::length(far.du - ref.du) / scale,
-                                 glm::length(far.dv - ref.dv) / scale});
+    worst.derivative =
+        std::max({worst.derivative, glm::length(far.du - ref.du) / scale, glm::length(far.dv - ref.dv) / scale});
     double second = std::max({glm::length(ref.duu), glm::length(ref.duv), glm::length(ref.dvv), scale});
     if (inside)
         worst.second = std::max({worst.second, glm::length(far.duu - ref.duu) / second,
@@ -114,8 +114,8 @@ Agreement compareFaces(const SubdivSurface& surface) {
 void expectAgreement(const SubdivSurface& surface, const Agreement& worst, const char* how) {
     std::printf("far_vs_bfr %-28s %-6s patches %5zu  samples %6zu  position %.2e diag  derivative %.2e  "
                 "normal %.2e deg (%zu)  second %.2e\n",
-                surface.name().c_str(), how, surface.patches().size(), worst.samples, worst.position,
-                worst.derivative, worst.normal, worst.normalSamples, worst.second);
+                surface.name().c_str(), how, surface.patches().size(), worst.samples, worst.position, worst.derivative,
+                worst.normal, worst.normalSamples, worst.second);
     EXPECT_LE(worst.position, 1e-5) << surface.name();
     EXPECT_LE(worst.normal, 0.1) << surface.name();
     EXPECT_LE(worst.derivative, 1e-4) << surface.name();
@@ -158,6 +158,21 @@ TEST(FarVsBfr, AgreeAtOtherIsolationLevels) {
             const SubdivSurface surface = build(shape, settings);
             expectAgreement(surface, comparePatches(surface), "levels");
         }
+    }
+}
+
+// B-spline end caps are an approximation of the Gregory patch Bfr uses, so
+// Far and Bfr differ near extraordinary vertices by the approximation
+// itself (reported; bounded only loosely).
+TEST(FarVsBfr, BSplineEndCapsApproximateBfr) {
+    SubdivSettings settings;
+    settings.endCap = EndCap::BSplineBasis;
+    for (const ObjShape& shape : {cube(), pentagonPyramid(false), extraordinaryDisk(), creasedCube(2.0f)}) {
+        const SubdivSurface surface = build(shape, settings);
+        const Agreement worst = comparePatches(surface);
+        std::printf("far_vs_bfr %-28s bspline-end-caps position %.2e diag  normal %.2e deg\n", surface.name().c_str(),
+                    worst.position, worst.normal);
+        EXPECT_LE(worst.position, 1e-2) << surface.name();
     }
 }
 

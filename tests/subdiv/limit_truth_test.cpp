@@ -63,7 +63,8 @@ std::unique_ptr<Far::TopologyRefiner> uniformRefiner(const ObjShape& shape, int 
     desc.holeIndices = holes.data();
     Sdc::Options options;
     options.SetVtxBoundaryInterpolation(Sdc::Options::VtxBoundaryInterpolation(int(shape.boundary)));
-    options.SetTriangleSubdivision(shape.smoothTriangles ? Sdc::Options::TRI_SUB_SMOOTH : Sdc::Options::TRI_SUB_CATMARK);
+    options.SetTriangleSubdivision(shape.smoothTriangles ? Sdc::Options::TRI_SUB_SMOOTH
+                                                         : Sdc::Options::TRI_SUB_CATMARK);
     using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
     std::unique_ptr<Far::TopologyRefiner> refiner(
         Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, options)));

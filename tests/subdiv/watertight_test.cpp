@@ -69,8 +69,8 @@ PointKey keyOf(const FaceTopology& topo, const PtexOwner& owner, uint32_t ptex, 
     if (u == 1.0 && v == 1.0) return {PointKey::Centre, f};
     if (v == 0.0) return edgeKey(topo.vertex(f, k), topo.vertex(f, k + 1), u / 2.0);
     if (u == 0.0) return edgeKey(topo.vertex(f, k), topo.vertex(f, k + n - 1), v / 2.0);
-    if (u == 1.0) return {PointKey::SubFaceEdge, f, k, v};             // to sub-face k+1
-    return {PointKey::SubFaceEdge, f, (k + n - 1) % n, u};             // v == 1: to sub-face k-1
+    if (u == 1.0) return {PointKey::SubFaceEdge, f, k, v}; // to sub-face k+1
+    return {PointKey::SubFaceEdge, f, (k + n - 1) % n, u}; // v == 1: to sub-face k-1
 }
 
 enum class Pair { SameDepthRegular, TransitionRegular, RegularEndCap, EndCapEndCap, Count };
@@ -129,8 +129,10 @@ std::array<PairFigures, size_t(Pair::Count)> measure(const ObjShape& shape, cons
         for (int side = 0; side < 4; ++side)
             for (int i = 0; i <= steps; ++i) {
                 const double t = i / double(steps);
-                const glm::dvec2 st = side == 0 ? glm::dvec2(t, 0) : side == 1 ? glm::dvec2(1, t)
-                                    : side == 2 ? glm::dvec2(t, 1) : glm::dvec2(0, t);
+                const glm::dvec2 st = side == 0   ? glm::dvec2(t, 0)
+                                      : side == 1 ? glm::dvec2(1, t)
+                                      : side == 2 ? glm::dvec2(t, 1)
+                                                  : glm::dvec2(0, t);
                 const PointKey key = keyOf(topo, owners[param.ptexFace()], param.ptexFace(), ptexCoord(param, st));
                 points[key].push_back({p, surface.evaluatePatch(p, st).position});
             }
@@ -142,8 +144,8 @@ std::array<PairFigures, size_t(Pair::Count)> measure(const ObjShape& shape, cons
     for (const auto& [key, samples] : points) {
         // A patch-edge point no other patch reaches is a gap in the
         // patches unless it lies on the mesh's own boundary.
-        const bool alone = std::all_of(samples.begin(), samples.end(),
-                                       [&](const Sample& s) { return s.patch == samples[0].patch; });
+        const bool alone =
+            std::all_of(samples.begin(), samples.end(), [&](const Sample& s) { return s.patch == samples[0].patch; });
         if (alone && !open.onBoundary(key)) ++unmatched;
         for (size_t i = 0; i < samples.size(); ++i)
             for (size_t j = i + 1; j < samples.size(); ++j) {
@@ -152,10 +154,10 @@ std::array<PairFigures, size_t(Pair::Count)> measure(const ObjShape& shape, cons
                 if (samples[i].patch == samples[j].patch) continue; // a patch corner met twice
                 const bool endA = a.type != PatchType::Regular || !a.param.isRegular();
                 const bool endB = b.type != PatchType::Regular || !b.param.isRegular();
-                const Pair pair = endA && endB ? Pair::EndCapEndCap
-                                : endA || endB ? Pair::RegularEndCap
-                                : a.param.depth() == b.param.depth() ? Pair::SameDepthRegular
-                                                                      : Pair::TransitionRegular;
+                const Pair pair = endA && endB                         ? Pair::EndCapEndCap
+                                  : endA || endB                       ? Pair::RegularEndCap
+                                  : a.param.depth() == b.param.depth() ? Pair::SameDepthRegular
+                                                                       : Pair::TransitionRegular;
                 PairFigures& f = figures[size_t(pair)];
                 ++f.comparisons;
                 const glm::dvec3 d = samples[i].position - samples[j].position;

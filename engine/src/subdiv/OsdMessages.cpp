@@ -17,8 +17,10 @@ thread_local OsdMessages* tCollector = nullptr;
 struct OsdMessageSink {
     static void add(const char* message) {
         std::string text = message ? message : "";
-        if (tCollector) tCollector->mMessages.push_back(std::move(text));
-        else log::warning("OpenSubdiv: " + text);
+        if (tCollector)
+            tCollector->mMessages.push_back(std::move(text));
+        else
+            log::warning("OpenSubdiv: " + text);
     }
     static void onError(Far::ErrorType, const char* message) { add(message); }
     static void onWarning(const char* message) { add(message); }
@@ -33,7 +35,9 @@ OsdMessages::OsdMessages() : mOuter(tCollector) {
     tCollector = this;
 }
 
-OsdMessages::~OsdMessages() { tCollector = mOuter; }
+OsdMessages::~OsdMessages() {
+    tCollector = mOuter;
+}
 
 std::string OsdMessages::joined() const {
     std::string text;

@@ -8,9 +8,12 @@ namespace {
 
 std::optional<PatchType> patchTypeOf(Far::PatchDescriptor::Type type) {
     switch (type) {
-    case Far::PatchDescriptor::REGULAR: return PatchType::Regular;
-    case Far::PatchDescriptor::GREGORY_BASIS: return PatchType::GregoryBasis;
-    default: return std::nullopt;
+    case Far::PatchDescriptor::REGULAR:
+        return PatchType::Regular;
+    case Far::PatchDescriptor::GREGORY_BASIS:
+        return PatchType::GregoryBasis;
+    default:
+        return std::nullopt;
     }
 }
 
@@ -39,9 +42,8 @@ Result<PatchArrays> PatchArrays::fromTable(const Far::PatchTable& table, uint32_
             Patch patch{*type, uint32_t(out.indices.size()), PatchParam{param.field0, param.field1, 0.0f}};
             for (int i = 0; i < points.size(); ++i) {
                 if (points[i] < 0 || uint32_t(points[i]) >= controlPointCount)
-                    return fail(name, ": OpenSubdiv patch ", std::to_string(handle.patchIndex),
-                                " names control point ", std::to_string(points[i]), " of ",
-                                std::to_string(controlPointCount));
+                    return fail(name, ": OpenSubdiv patch ", std::to_string(handle.patchIndex), " names control point ",
+                                std::to_string(points[i]), " of ", std::to_string(controlPointCount));
                 out.indices.push_back(uint32_t(points[i]));
             }
             out.patches.push_back(patch);

@@ -14,22 +14,33 @@ namespace Sdc = OpenSubdiv::Sdc;
 
 namespace {
 
-std::string str(uint64_t value) { return std::to_string(value); }
+std::string str(uint64_t value) {
+    return std::to_string(value);
+}
 
-bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+bool finite(const glm::vec3& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
 
-bool validSharpness(float s) { return std::isfinite(s) && s >= 0.0f; }
+bool validSharpness(float s) {
+    return std::isfinite(s) && s >= 0.0f;
+}
 
 Sdc::Options sdcOptions(const ObjShape& shape) {
     Sdc::Options options;
     switch (shape.boundary) {
-    case BoundaryInterpolation::None: options.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_NONE); break;
-    case BoundaryInterpolation::EdgeOnly: options.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY); break;
+    case BoundaryInterpolation::None:
+        options.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_NONE);
+        break;
+    case BoundaryInterpolation::EdgeOnly:
+        options.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+        break;
     case BoundaryInterpolation::EdgeAndCorner:
         options.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
         break;
     }
-    options.SetTriangleSubdivision(shape.smoothTriangles ? Sdc::Options::TRI_SUB_SMOOTH : Sdc::Options::TRI_SUB_CATMARK);
+    options.SetTriangleSubdivision(shape.smoothTriangles ? Sdc::Options::TRI_SUB_SMOOTH
+                                                         : Sdc::Options::TRI_SUB_CATMARK);
     return options;
 }
 
@@ -66,14 +77,16 @@ Status validateTags(const ObjShape& shape) {
         if (c.v0 >= vertices || c.v1 >= vertices)
             return fail(name, ": crease ", str(i), " names vertex ", str(std::max(c.v0, c.v1)), " but the shape has ",
                         str(vertices), " vertices");
-        if (!validSharpness(c.sharpness)) return fail(name, ": crease ", str(i), " has a negative or non-finite sharpness");
+        if (!validSharpness(c.sharpness))
+            return fail(name, ": crease ", str(i), " has a negative or non-finite sharpness");
     }
     for (size_t i = 0; i < shape.corners.size(); ++i) {
         const Corner& c = shape.corners[i];
         if (c.vertex >= vertices)
-            return fail(name, ": corner ", str(i), " names vertex ", str(c.vertex), " but the shape has ", str(vertices),
-                        " vertices");
-        if (!validSharpness(c.sharpness)) return fail(name, ": corner ", str(i), " has a negative or non-finite sharpness");
+            return fail(name, ": corner ", str(i), " names vertex ", str(c.vertex), " but the shape has ",
+                        str(vertices), " vertices");
+        if (!validSharpness(c.sharpness))
+            return fail(name, ": corner ", str(i), " has a negative or non-finite sharpness");
     }
     for (uint32_t hole : shape.holes)
         if (hole >= shape.faceSizes.size())

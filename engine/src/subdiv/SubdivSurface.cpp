@@ -20,8 +20,9 @@ using detail::OsdPoint;
 
 Far::PatchTableFactory::Options patchOptions(const SubdivSettings& settings) {
     Far::PatchTableFactory::Options options(settings.isolationLevel);
-    options.SetEndCapType(settings.endCap == EndCap::GregoryBasis ? Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS
-                                                                   : Far::PatchTableFactory::Options::ENDCAP_BSPLINE_BASIS);
+    options.SetEndCapType(settings.endCap == EndCap::GregoryBasis
+                              ? Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS
+                              : Far::PatchTableFactory::Options::ENDCAP_BSPLINE_BASIS);
     // Must match the refinement (ShapeRefiner.cpp).
     options.useInfSharpPatch = true;
     options.useSingleCreasePatch = false;
@@ -52,7 +53,9 @@ std::unique_ptr<const Far::StencilTable> createStencils(const Far::TopologyRefin
         Far::StencilTableFactory::AppendLocalPointStencilTable(refiner, vertices.get(), local));
 }
 
-bool finite(const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+bool finite(const glm::vec3& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
 
 } // namespace
 
@@ -139,23 +142,57 @@ Status SubdivSurface::updateControlPoints(std::span<const glm::vec3> basePositio
     return {};
 }
 
-const std::string& SubdivSurface::name() const { return mImpl->name; }
-const SubdivSettings& SubdivSurface::settings() const { return mImpl->settings; }
-uint32_t SubdivSurface::baseVertexCount() const { return uint32_t(mImpl->basePositions.size()); }
-uint32_t SubdivSurface::baseFaceCount() const { return uint32_t(mImpl->faceSizes.size()); }
-uint32_t SubdivSurface::baseFaceSize(uint32_t face) const { return mImpl->faceSizes.at(face); }
-bool SubdivSurface::isHole(uint32_t face) const { return mImpl->refiner->GetLevel(0).IsFaceHole(Far::Index(face)); }
-std::span<const glm::vec3> SubdivSurface::basePositions() const { return mImpl->basePositions; }
-std::span<const glm::vec3> SubdivSurface::controlPoints() const { return mImpl->controlPoints; }
-uint32_t SubdivSurface::refinedVertexCount() const { return mImpl->refinedVertexCount; }
-uint32_t SubdivSurface::localPointCount() const { return mImpl->localPointCount; }
-uint32_t SubdivSurface::maxDepth() const { return uint32_t(mImpl->refiner->GetMaxLevel()); }
-std::span<const Patch> SubdivSurface::patches() const { return mImpl->patches.patches; }
-std::span<const uint32_t> SubdivSurface::patchPointIndices() const { return mImpl->patches.indices; }
-std::span<const PatchRange> SubdivSurface::patchRanges() const { return mImpl->patches.ranges; }
-uint32_t SubdivSurface::ptexFaceCount() const { return mImpl->firstPtex.back(); }
-uint32_t SubdivSurface::firstPtexFace(uint32_t face) const { return mImpl->firstPtex.at(face); }
-scene::Aabb SubdivSurface::bounds() const { return mImpl->bounds; }
+const std::string& SubdivSurface::name() const {
+    return mImpl->name;
+}
+const SubdivSettings& SubdivSurface::settings() const {
+    return mImpl->settings;
+}
+uint32_t SubdivSurface::baseVertexCount() const {
+    return uint32_t(mImpl->basePositions.size());
+}
+uint32_t SubdivSurface::baseFaceCount() const {
+    return uint32_t(mImpl->faceSizes.size());
+}
+uint32_t SubdivSurface::baseFaceSize(uint32_t face) const {
+    return mImpl->faceSizes.at(face);
+}
+bool SubdivSurface::isHole(uint32_t face) const {
+    return mImpl->refiner->GetLevel(0).IsFaceHole(Far::Index(face));
+}
+std::span<const glm::vec3> SubdivSurface::basePositions() const {
+    return mImpl->basePositions;
+}
+std::span<const glm::vec3> SubdivSurface::controlPoints() const {
+    return mImpl->controlPoints;
+}
+uint32_t SubdivSurface::refinedVertexCount() const {
+    return mImpl->refinedVertexCount;
+}
+uint32_t SubdivSurface::localPointCount() const {
+    return mImpl->localPointCount;
+}
+uint32_t SubdivSurface::maxDepth() const {
+    return uint32_t(mImpl->refiner->GetMaxLevel());
+}
+std::span<const Patch> SubdivSurface::patches() const {
+    return mImpl->patches.patches;
+}
+std::span<const uint32_t> SubdivSurface::patchPointIndices() const {
+    return mImpl->patches.indices;
+}
+std::span<const PatchRange> SubdivSurface::patchRanges() const {
+    return mImpl->patches.ranges;
+}
+uint32_t SubdivSurface::ptexFaceCount() const {
+    return mImpl->firstPtex.back();
+}
+uint32_t SubdivSurface::firstPtexFace(uint32_t face) const {
+    return mImpl->firstPtex.at(face);
+}
+scene::Aabb SubdivSurface::bounds() const {
+    return mImpl->bounds;
+}
 
 std::span<const uint32_t> SubdivSurface::patchPoints(uint32_t patch) const {
     const Patch& p = mImpl->patches.patches.at(patch);

@@ -25,7 +25,9 @@ enum class PatchType : uint32_t {
 };
 
 /// Control points per patch of a type.
-constexpr uint32_t controlPointsOf(PatchType type) { return type == PatchType::GregoryBasis ? 20u : 16u; }
+constexpr uint32_t controlPointsOf(PatchType type) {
+    return type == PatchType::GregoryBasis ? 20u : 16u;
+}
 
 /// A Far::PatchParam packed exactly as OpenSubdiv packs it, plus the
 /// single-crease sharpness: the three words of GLSL's OsdPatchParam (ivec3,
