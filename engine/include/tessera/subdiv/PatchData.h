@@ -54,7 +54,13 @@ struct PatchParam {
     uint32_t transitionMask() const { return field0 >> 28; }
     /// Refinement level of the patch (non-quad faces start at 1).
     uint32_t depth() const { return field1 & 0xfu; }
-    /// True when the patch descends from a non-quad base face.
+    /// True when the patch descends from a non-quad base face. Such a
+    /// patch's positions take its ptex sub-face's [0, 1] coordinates, but
+    /// OpenSubdiv's basis (Far::PatchTable::EvaluateBasis and GLSL
+    /// OsdEvaluatePatchBasis alike) scales its derivatives by 2^depth,
+    /// which makes them derivatives per Bfr's half-size tile: halve first
+    /// derivatives (quarter second ones) for derivatives per ptex (u, v),
+    /// as SubdivSurface's evaluation does.
     bool nonQuadRoot() const { return (field1 >> 4) & 1u; }
     /// True for a regular (B-spline) patch, false for an end cap.
     bool isRegular() const { return (field1 >> 5) & 1u; }

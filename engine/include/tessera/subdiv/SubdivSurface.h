@@ -42,6 +42,22 @@ namespace tessera::subdiv {
 /// coordinates the call takes (ptex (u, v) for evaluatePatch and
 /// evaluatePtex, Bfr's face (u, v) for evaluateFace).
 ///
+/// Derivatives: exact for B-spline patches. On Gregory end caps they are
+/// OpenSubdiv's approximation (the derivatives of the Bezier patch whose
+/// interior points are the face points blended at (u, v), as its GPU
+/// shaders compute them), up to a few percent off the derivative of the
+/// rational patch; Bfr uses the same, so normals agree with it.
+///
+/// Watertightness (measured in tests/subdiv/watertight_test.cpp): where two
+/// patches share an edge, positions evaluated from either side in double
+/// are bit-identical between Gregory end caps (shared edge points), and
+/// between B-spline patches of one depth up to the order of summation
+/// (1e-16 of the diagonal); between depths and between a B-spline patch
+/// and an end cap they differ by 1e-8 .. 1e-7 of the diagonal, because each
+/// side reads its own float control points (another level's vertices, or
+/// local points), equal only in exact arithmetic. A crack-free GPU
+/// tessellation must therefore not rely on bit-equal edge positions there.
+///
 /// Thread safety: const members may be called concurrently; create and
 /// updateControlPoints need exclusive access.
 class SubdivSurface {
