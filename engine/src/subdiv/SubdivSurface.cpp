@@ -158,7 +158,7 @@ uint32_t SubdivSurface::baseFaceSize(uint32_t face) const {
     return mImpl->faceSizes.at(face);
 }
 bool SubdivSurface::isHole(uint32_t face) const {
-    return mImpl->refiner->GetLevel(0).IsFaceHole(Far::Index(face));
+    return face < baseFaceCount() && mImpl->refiner->GetLevel(0).IsFaceHole(Far::Index(face));
 }
 std::span<const glm::vec3> SubdivSurface::basePositions() const {
     return mImpl->basePositions;

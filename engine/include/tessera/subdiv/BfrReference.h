@@ -28,8 +28,9 @@ class SubdivSurface;
 /// caps do, so the two agree to round-off; with B-spline end caps they
 /// differ near extraordinary vertices by the end caps' approximation.
 ///
-/// Holds a reference to the surface: keep the surface alive (and unmoved)
-/// while this exists. Not thread-safe (Bfr's factory caches patches).
+/// Reads the surface's state (its refiner and current base positions): keep
+/// the surface alive while this exists (moving the surface is fine). Not
+/// thread-safe (Bfr's factory caches patches).
 class BfrReference {
 public:
     explicit BfrReference(const SubdivSurface& surface);

@@ -124,10 +124,10 @@ public:
     /// count different from baseVertexCount() or a non-finite position.
     Status updateControlPoints(std::span<const glm::vec3> basePositions);
 
-    /// Evaluates patch `patch` at its own (s, t) in [0, 1]^2 (a
-    /// tessellator's domain coordinate); derivatives are with respect to
-    /// the patch's ptex-face (u, v), so they agree across patches of
-    /// different depths.
+    /// Evaluates patch `patch` (< patches().size()) at its own (s, t) in
+    /// [0, 1]^2 (a tessellator's domain coordinate); derivatives are with
+    /// respect to the patch's ptex-face (u, v), so they agree across
+    /// patches of different depths.
     LimitPoint evaluatePatch(uint32_t patch, glm::dvec2 st) const;
     /// Evaluates ptex face `ptexFace` at (u, v) in [0, 1]^2, finding the
     /// patch with Far's PatchMap; nothing for a hole or a face without
