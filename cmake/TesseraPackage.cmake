@@ -1,11 +1,12 @@
 # Installs Tessera as a CMake package so a game can
 #   find_package(Tessera REQUIRED)
-#   target_link_libraries(game PRIVATE Tessera::core Tessera::gpu Tessera::assets)
+#   target_link_libraries(game PRIVATE Tessera::core Tessera::gpu Tessera::assets Tessera::subdiv)
 # (Tessera::assets, the glTF/Draco character loader, is optional: link it only
-# to load .gltf/.glb files.)
+# to load .gltf/.glb files; Tessera::subdiv, the Catmull-Clark base surfaces,
+# likewise. Both link their dependencies privately.)
 include(CMakePackageConfigHelpers)
 
-install(TARGETS tessera_core tessera_gpu tessera_assets EXPORT TesseraTargets
+install(TARGETS tessera_core tessera_gpu tessera_assets tessera_subdiv EXPORT TesseraTargets
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
