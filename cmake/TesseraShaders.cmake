@@ -9,9 +9,12 @@
 # `const uint32_t <ident>_spv[]`, where <ident> is the file name with '.' as
 # '_' (terrain.vert -> terrain_vert_spv). The headers are embedded in the
 # module that uses them: no shader files to find at run time.
+# Includes generated at build time (tools/osdglsl: OpenSubdiv's patch basis).
+set(TESSERA_GENERATED_GLSL_DIR ${PROJECT_BINARY_DIR}/generated/glsl)
 set(TESSERA_SHADER_INCLUDE_DIRS
     ${PROJECT_SOURCE_DIR}/engine/shaders/include
     ${PROJECT_SOURCE_DIR}/engine/shaders/shared
+    ${TESSERA_GENERATED_GLSL_DIR}
     CACHE INTERNAL "Shared GLSL include directories")
 
 function(tessera_add_shaders target)
