@@ -51,6 +51,9 @@ function(tessera_add_shaders target)
         set(shaderTarget ${target}_shaders_${ARG_VARIANT})
     endif()
     add_custom_target(${shaderTarget} DEPENDS ${outputs})
+    # Any shader may include the generated OpenSubdiv basis; its depfile
+    # tracks the include once it exists, this makes it exist first.
+    add_dependencies(${shaderTarget} tessera_osd_glsl)
     add_dependencies(${target} ${shaderTarget})
     target_include_directories(${target} PRIVATE ${outdir})
 endfunction()

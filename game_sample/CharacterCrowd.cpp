@@ -45,6 +45,8 @@ Result<std::unique_ptr<CharacterCrowd>> CharacterCrowd::load(const DemoOptions& 
     crowd->mTerrain = &terrain;
     crowd->mSite = findSite(terrain);
     crowd->mOrbit = {crowd->mSite, options.orbitDistance.value_or(kOrbitDistance), kOrbitHeight, kLookHeight};
+    crowd->mOrbitFixed = options.orbitDistance.has_value();
+    crowd->mOnlyModels = options.crowd == 0;
 
     const uint32_t froblins = std::min(options.crowd, CharacterAssets::kFroblinSeeds);
     if (Status ok = crowd->mAssets.addFroblins(options.contentDir, froblins); !ok) return ok.error();
@@ -143,6 +145,21 @@ void CharacterCrowd::frameModels(uint32_t firstModel) {
         const float reach = glm::length(glm::vec2(box.extents().x, box.extents().z)) + glm::length(glm::vec2(box.center().x, box.center().z));
         bounds.expand(scene::Aabb::fromMinMax(at + glm::vec3(-reach, box.min.y, -reach), at + glm::vec3(reach, box.max.y, reach)));
     }
+    frameBounds(bounds, alone);
+}
+
+void CharacterCrowd::frameAlso(const scene::Aabb& box) {
+    if (mOrbitFixed) return;
+    scene::Aabb bounds = mFramed;
+    const bool alone = mOnlyModels && mMembers.empty();
+    if (!alone && bounds.isEmpty())
+        bounds = scene::Aabb::fromMinMax(mSite - glm::vec3(0.5f), mSite + glm::vec3(0.5f, 1.5f, 0.5f));
+    bounds.expand(box);
+    frameBounds(bounds, mOnlyModels);
+}
+
+void CharacterCrowd::frameBounds(const scene::Aabb& bounds, bool alone) {
+    mFramed = bounds;
     const float radius = glm::length(bounds.extents());
     const float fit = 1.2f * radius / std::sin(0.5f * scene::Camera::kDefaultVerticalFov);
     const float distance = alone ? std::max(fit, 1.0f) : std::max(fit, kOrbitDistance);

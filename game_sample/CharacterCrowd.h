@@ -42,6 +42,12 @@ public:
 
     /// Where the crowd gathers (on the ground), for the camera.
     glm::vec3 site() const { return mSite; }
+    /// Whether the scene holds nothing but what --model placed (no
+    /// generated creatures, no CesiumMan).
+    bool onlyModels() const { return mOnlyModels; }
+    /// Widens the orbit to fit `box` (world) too, as for --model files
+    /// (unless --orbit-distance fixes it).
+    void frameAlso(const scene::Aabb& box);
     /// The characters scene's camera at `seconds`: circling the site.
     void dollyOrbit(float endDistance, double seconds) override {
         mOrbit.endDistance = endDistance;
@@ -50,6 +56,9 @@ public:
     scene::CameraPose orbitPose(double seconds) const override { return mOrbit.pose(*mTerrain, seconds); }
 
 private:
+    /// Points the orbit at `bounds` (world), closer when `alone`.
+    void frameBounds(const scene::Aabb& bounds, bool alone);
+
     struct Member {
         uint32_t asset = 0;
         int clip = -1;           ///< -1: rest pose
@@ -83,6 +92,9 @@ private:
     std::vector<Member> mMembers;
     glm::vec3 mSite{0.0f};
     CameraOrbit mOrbit;
+    bool mOnlyModels = false;
+    bool mOrbitFixed = false;    ///< --orbit-distance
+    scene::Aabb mFramed;         ///< what the orbit fits (world)
 };
 
 } // namespace tessera::demo

@@ -5,6 +5,8 @@
 #include "tessera/crowd/Crowd.h"
 #include "tessera/lod/LodPolicy.h"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +14,14 @@
 
 namespace tessera::demo {
 namespace {
+
+/// A Catmull-Clark control mesh (.obj, any case), not a glTF model.
+bool isObjFile(const std::string& path) {
+    if (path.size() < 4) return false;
+    std::string ext = path.substr(path.size() - 4);
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".obj";
+}
 
 Result<uint32_t> parseCount(const std::string& flag, const std::string& text, uint32_t min, uint32_t max) {
     uint32_t value = 0;
@@ -125,8 +135,10 @@ Scene:
   --model FILE          place a .gltf or .glb file in the characters scene,
                         playing its first animation, or (--scene crowd) mix
                         it into the crowd with the generated creatures; a
-                        crowd's models need a skin and a walk clip
-                        (repeatable)
+                        crowd's models need a skin and a walk clip; or a
+                        .obj control mesh (OpenSubdiv's tags read) drawn as
+                        a Catmull-Clark surface with a procedural analytic
+                        displacement, in the characters scene (repeatable)
   --crowd N             generated creatures in the characters scene, with
                         CesiumMan (default 6; 0: only the --model files,
                         centred where the crowd would stand)
@@ -202,6 +214,25 @@ Terrain tessellation (the first paper's Table 2 modes):
                         (default 15)
   --tess-max L          largest adaptive level (default: the backend's
                         maximum, 64 hardware, 14.99 emulated)
+
+Subdivision surfaces (--model FILE.obj; the second paper, docs/SUBDIV.md):
+  --normals N           accurate (with the Weingarten term) | approximate
+                        (without; the default)
+  --subdiv-pixels PX    screen-space level of detail: pixels per
+                        tessellated segment (default 6)
+  --subdiv-level L      one level everywhere instead (1 to the backend's
+                        maximum), for measurements
+  --subdiv-budget T     tessellated triangles per frame, all surfaces
+                        (default: 150000 on lavapipe, 4000000 on a GPU);
+                        levels scale down to fit
+  --no-mips             sample the finest displacement mip everywhere
+                        instead of the level of detail's (section 6)
+  --subdiv-view V       shaded | patches (regular patches green to blue by
+                        depth, end caps red) | levels | mips
+  --subdiv-amplitude A  procedural displacement, fraction of the shape's
+                        diagonal (default 0.02; 0: the base surface)
+  --subdiv-still        keep the control cages in their rest pose (they
+                        sway by default)
 
 Output:
   --width N --height N  render size (default 1280x720)
@@ -301,7 +332,50 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         else if (flag == "--wireframe") o.wireframe = true;
         else if (flag == "--no-displacement") o.displacement = false;
         else if (flag == "--no-terrain") o.terrain = false;
-        else if (flag == "--model") { TESSERA_TAKE(v); o.models.push_back(v); }
+        else if (flag == "--model") {
+            TESSERA_TAKE(v);
+            (isObjFile(v) ? o.surfaces : o.models).push_back(v);
+        }
+        else if (flag == "--normals") {
+            TESSERA_TAKE(v);
+            if (v == "approximate") o.subdiv.normals = 0;
+            else if (v == "accurate") o.subdiv.normals = 1;
+            else return fail("--normals expects accurate or approximate, got \"", v, "\"");
+        }
+        else if (flag == "--subdiv-view") {
+            TESSERA_TAKE(v);
+            const char* const views[] = {"shaded", "patches", "levels", "mips"};
+            auto it = std::find(std::begin(views), std::end(views), v);
+            if (it == std::end(views))
+                return fail("--subdiv-view expects shaded, patches, levels or mips, got \"", v, "\"");
+            o.subdiv.view = uint32_t(it - std::begin(views));
+        }
+        else if (flag == "--subdiv-level") {
+            TESSERA_TAKE(text);
+            auto n = parseNumber(flag, text, 1.0f, 64.0f);
+            if (!n) return n.error();
+            o.subdiv.level = n.value();
+        }
+        else if (flag == "--subdiv-pixels") {
+            TESSERA_TAKE(text);
+            auto n = parseNumber(flag, text, 0.5f, 1000.0f);
+            if (!n) return n.error();
+            o.subdiv.pixels = n.value();
+        }
+        else if (flag == "--subdiv-amplitude") {
+            TESSERA_TAKE(text);
+            auto n = parseNumber(flag, text, 0.0f, 0.25f);
+            if (!n) return n.error();
+            o.subdiv.amplitude = n.value();
+        }
+        else if (flag == "--subdiv-budget") {
+            TESSERA_TAKE(text);
+            auto n = parseCount(flag, text, 1000, 1000000000);
+            if (!n) return n.error();
+            o.subdiv.budget = n.value();
+        }
+        else if (flag == "--no-mips") o.subdiv.mips = false;
+        else if (flag == "--subdiv-still") o.subdiv.animate = false;
         else if (flag == "--scene") {
             TESSERA_TAKE(v);
             if (v != "terrain" && v != "characters" && v != "crowd")
@@ -485,12 +559,12 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
     if (lodFar > lodNear)
         return fail("--lod-far ", formatNumber(lodFar), " is above --lod-near ", formatNumber(lodNear),
                     ": the far threshold must be the smaller");
-    if (!o.models.empty() && !o.sceneGiven) o.scene = "characters";
+    if ((!o.models.empty() || !o.surfaces.empty()) && !o.sceneGiven) o.scene = "characters";
     const bool crowdFlags = !o.agents.empty() || crowdDrawGiven;
     if (crowdFlags && !o.sceneGiven && o.bench.empty()) o.scene = "crowd";
     // With no scene asked for, the showcase: the crowd on the adaptive
     // terrain under a meteor shower, seen from a flight over it.
-    if (!o.sceneGiven && o.models.empty() && o.bench.empty()) o.scene = "crowd";
+    if (!o.sceneGiven && o.models.empty() && o.surfaces.empty() && o.bench.empty()) o.scene = "crowd";
     if (o.scene == "crowd" && o.bench.empty() && !o.meteorsGiven) o.meteors = kCrowdSceneMeteors;
     const bool crowdBench = o.bench == "crowd" || o.bench == "crowd-sim";
     if (crowdFlags && o.scene != "crowd" && !crowdBench)
@@ -501,6 +575,9 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
                     std::to_string(o.agents.size()));
     if (!o.models.empty() && o.scene != "characters" && o.scene != "crowd")
         return fail("--model places models in the characters or crowd scene; drop --scene ", o.scene);
+    if (!o.surfaces.empty() && o.scene != "characters")
+        return fail("--model ", o.surfaces.front(), ": a .obj surface stands in the characters scene; drop --scene ",
+                    o.scene);
     if (o.bench == "terrain" && o.scene != "terrain")
         return fail("--bench terrain measures the terrain; drop --scene ", o.scene);
     if (!o.tessTargetGiven) o.tessellation.targetPixels = terrain::defaultTargetPixels(o.tessellation.metric);

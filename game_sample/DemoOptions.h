@@ -18,6 +18,19 @@
 
 namespace tessera::demo {
 
+/// How --model .obj files (Catmull-Clark surfaces with analytic
+/// displacement, docs/SUBDIV.md) are drawn.
+struct SubdivOptions {
+    uint32_t normals = 0;               ///< --normals approximate (0) | accurate (1): TS_SUBDIV_NORMALS_*
+    std::optional<float> level;         ///< --subdiv-level L: one level everywhere (measurements)
+    std::optional<float> pixels;        ///< --subdiv-pixels PX: target pixels per tessellated segment
+    uint32_t view = 0;                  ///< --subdiv-view shaded|patches|levels|mips: TS_SUBDIV_VIEW_*
+    bool mips = true;                   ///< --no-mips: sample the finest displacement level everywhere
+    std::optional<uint64_t> budget;     ///< --subdiv-budget T: tessellated triangles per frame, all surfaces
+    float amplitude = 0.02f;            ///< --subdiv-amplitude A: procedural displacement, fraction of the diagonal
+    bool animate = true;                ///< --subdiv-still: the cages keep their rest pose
+};
+
 /// Meteor impacts over a crowd-scene run when --meteors is not given.
 inline constexpr uint32_t kCrowdSceneMeteors = 4;
 
@@ -75,6 +88,8 @@ struct DemoOptions {
     std::string scene = "terrain";
     bool sceneGiven = false;
     std::vector<std::string> models;    ///< --model FILE (repeatable): any .gltf or .glb
+    std::vector<std::string> surfaces;  ///< --model FILE.obj (repeatable): Catmull-Clark control meshes
+    SubdivOptions subdiv;
     uint32_t crowd = 6;                 ///< --crowd N: generated creatures (0: only the --model files, no CesiumMan)
     /// --orbit-distance M: the camera circle's radius; unset: 5 m in the
     /// characters scene, 30 m in the crowd scene.

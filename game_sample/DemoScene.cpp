@@ -51,6 +51,14 @@ Result<std::unique_ptr<DemoScene>> DemoScene::load(const DemoOptions& options, u
     if (options.scene == "characters") {
         auto crowd = CharacterCrowd::load(options, ground);
         if (!crowd) return crowd.error();
+        if (!options.surfaces.empty()) {
+            // The surfaces stand at the middle of the creatures' circles.
+            const glm::vec3 site = crowd.value()->site();
+            auto surfaces = SubdivModels::load(options, ground, glm::vec2(site.x, site.z));
+            if (!surfaces) return surfaces.error();
+            scene->mSurfaces = std::move(surfaces.value());
+            crowd.value()->frameAlso(scene->mSurfaces->bounds());
+        }
         scene->mCharacters = std::move(crowd.value());
     } else if (options.scene == "crowd") {
         auto crowd = SimulatedCrowd::create(options, ground);

@@ -7,6 +7,7 @@
 #include "CharacterPopulation.h"
 #include "DemoOptions.h"
 #include "SimulatedCrowd.h"
+#include "SubdivModels.h"
 #include "tessera/core/Result.h"
 #include "tessera/scene/CameraPath.h"
 #include "tessera/terrain/HeightField.h"
@@ -38,6 +39,9 @@ public:
     terrain::Terrain& terrain() { return *mTerrain; }
     /// The characters of the characters or crowd scene; null in the terrain scene.
     CharacterPopulation* characters() { return mCharacters.get(); }
+    /// The characters scene's Catmull-Clark surfaces (--model FILE.obj);
+    /// null when there are none.
+    SubdivModels* surfaces() { return mSurfaces.get(); }
     /// The simulated crowd of the crowd scene (the same object as
     /// characters()); null in the other scenes.
     SimulatedCrowd* simulatedCrowd() { return mSimulated; }
@@ -59,6 +63,7 @@ private:
     std::unique_ptr<terrain::Terrain> mTerrain;
     std::unique_ptr<CharacterPopulation> mCharacters;
     SimulatedCrowd* mSimulated = nullptr;
+    std::unique_ptr<SubdivModels> mSurfaces;
     std::optional<scene::CameraPath> mPath;
     std::optional<scene::CameraPose> mFixedPose;
     std::vector<terrain::MeteorImpact> mImpacts;

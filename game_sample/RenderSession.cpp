@@ -56,6 +56,7 @@ RenderSession::~RenderSession() {
     if (!mSelected || !mSelected->backend) return;
     if (mScheduler) mScheduler->waitIdle();
     for (backend::CharacterHandle character : mCharacters) mSelected->backend->destroyCharacter(character);
+    for (backend::SubdivHandle surface : mSubdivs) mSelected->backend->destroySubdiv(surface);
     if (mTerrainHandle.valid()) mSelected->backend->destroyTerrain(mTerrainHandle);
     mSelected->backend->shutdown();
 }
@@ -128,6 +129,21 @@ Status RenderSession::createCrowd(const backend::CrowdDesc& desc) {
     return {};
 }
 
+Status RenderSession::createSubdivs(SubdivModels& models) {
+    TESSERA_CPU_SCOPE("load.subdivUpload");
+    for (size_t i = 0; i < models.size(); ++i) {
+        auto handle = mSelected->backend->createSubdiv(models.desc(i));
+        if (!handle) return fail("backend ", capabilities().name, ": ", handle.error().message);
+        models.setHandle(i, handle.value());
+        mSubdivs.push_back(handle.value());
+    }
+    return {};
+}
+
+Result<backend::SubdivPoints> RenderSession::readSubdivPoints(backend::SubdivHandle handle) {
+    return mSelected->backend->readSubdivPoints(handle);
+}
+
 Result<backend::CrowdTiers> RenderSession::readCrowdTiers() {
     if (!mCrowd.valid()) return Error{"no instanced crowd on backend " + capabilities().name};
     return mSelected->backend->readCrowdTiers(mCrowd);
@@ -142,7 +158,7 @@ bool RenderSession::pollWindow() {
 void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera,
                                 const terrain::TessellationSettings& settings, const glm::vec3& clearColor,
                                 bool wireframe, bool readback, const backend::CharacterDrawInfo* characters,
-                                const backend::CrowdDrawInfo* crowd) {
+                                const backend::CrowdDrawInfo* crowd, std::span<const SubdivDraw> surfaces) {
     backend::Backend& backend = *mSelected->backend;
     mVisible.clear();
     {
@@ -169,6 +185,7 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
         if (mTerrainVisible) backend.drawTerrain(mTerrainHandle, {mVisible, settings});
         if (characters) backend.drawCharacters(*characters);
         if (crowd && mCrowd.valid()) backend.drawCrowd(mCrowd, *crowd);
+        for (const SubdivDraw& surface : surfaces) backend.drawSubdiv(surface.handle, surface.info);
         backend.endFrame();
     }
     if (mScheduler) {

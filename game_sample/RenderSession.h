@@ -6,6 +6,7 @@
 #include "BackendSelection.h"
 #include "CharacterAssets.h"
 #include "DemoOptions.h"
+#include "SubdivModels.h"
 #include "tessera/lod/LodPolicy.h"
 #include "tessera/gpu/FrameScheduler.h"
 #include "tessera/gpu/RenderTarget.h"
@@ -48,6 +49,13 @@ public:
     /// session); renderFrame draws it when given its frame. An error naming
     /// the backend when it cannot.
     Status createCrowd(const backend::CrowdDesc& desc);
+    /// Uploads every surface of `models` and binds the handles (destroyed
+    /// with the session). An error naming the backend and the surface when
+    /// the backend cannot draw it.
+    Status createSubdivs(SubdivModels& models);
+    /// The refined points of surface `handle` as the backend's last frame
+    /// used them (blocking).
+    Result<backend::SubdivPoints> readSubdivPoints(backend::SubdivHandle handle);
     /// The crowd's tiers as the backend binned them in the last frame
     /// (blocking).
     Result<backend::CrowdTiers> readCrowdTiers();
@@ -64,13 +72,13 @@ public:
     /// Handles window events; false once the window was closed.
     bool pollWindow();
     /// Records and submits one frame: pending craters into the GPU height
-    /// map, culling, the terrain draw, then `characters` and `crowd` (the
-    /// crowd createCrowd made) when given. Reads the image back when
-    /// `readback`.
+    /// map, culling, the terrain draw, then `characters`, `crowd` (the
+    /// crowd createCrowd made) and `surfaces` when given. Reads the image
+    /// back when `readback`.
     void renderFrame(uint32_t frameIndex, const scene::Camera& camera, const terrain::TessellationSettings& settings,
                      const glm::vec3& clearColor, bool wireframe, bool readback,
                      const backend::CharacterDrawInfo* characters = nullptr,
-                     const backend::CrowdDrawInfo* crowd = nullptr);
+                     const backend::CrowdDrawInfo* crowd = nullptr, std::span<const SubdivDraw> surfaces = {});
     /// Waits for the GPU; the last read-back image (RGBA8), empty if none.
     std::vector<uint8_t> finish();
     /// The backend's own account of its last recorded frame (intermediate
@@ -92,6 +100,7 @@ private:
     backend::TerrainHandle mTerrainHandle;
     std::vector<backend::CharacterHandle> mCharacters;
     backend::CrowdHandle mCrowd;
+    std::vector<backend::SubdivHandle> mSubdivs;
     bool mTerrainVisible = true;
     uint32_t mWidth = 0;
     uint32_t mHeight = 0;

@@ -9,6 +9,14 @@
 
 namespace tessera::demo {
 
+namespace {
+/// Tessellated triangles per frame for all --model .obj surfaces: a
+/// software rasterizer stays interactive (well under a second a frame at
+/// 1280x720 on two cores); a GPU takes millions.
+constexpr uint64_t kSubdivBudgetCpu = 150000;
+constexpr uint64_t kSubdivBudgetGpu = 4000000;
+} // namespace
+
 Result<std::unique_ptr<SceneRun>> SceneRun::create(const DemoOptions& options, uint32_t frames) {
     std::unique_ptr<SceneRun> run(new SceneRun());
     run->mOptions = options;
@@ -50,6 +58,13 @@ Result<std::unique_ptr<SceneRun>> SceneRun::create(const DemoOptions& options, u
             run->mInstanced = instanced;
         }
     }
+    if (SubdivModels* surfaces = run->mScene->surfaces()) {
+        if (options.subdiv.level && *options.subdiv.level > session.capabilities().maxTessFactor)
+            return fail("--subdiv-level ", formatNumber(*options.subdiv.level), ": backend ",
+                        session.capabilities().name, " tessellates up to level ",
+                        formatNumber(session.capabilities().maxTessFactor));
+        if (Status ok = session.createSubdivs(*surfaces); !ok) return ok.error();
+    }
     if (const SimulatedCrowd* simulated = run->mScene->simulatedCrowd())
         std::printf("%s\n",
                     simulated->drawingMode(session.capabilities().name, session.capabilities().requiresGpu).c_str());
@@ -73,8 +88,16 @@ void SceneRun::renderFrame(uint32_t frame, bool readback) {
         draw = {characters->items(), mOptions.characterPath, mOptions.displacement, mOptions.lodColors};
         if (mInstanced) crowdDraw = mInstanced->drawInfo(mOptions.displacement, mOptions.lodColors);
     }
+    std::span<const SubdivDraw> surfaceDraws;
+    if (SubdivModels* surfaces = mScene->surfaces()) {
+        const uint64_t budget = mOptions.subdiv.budget.value_or(
+            session.deviceClass() == lod::DeviceClass::Cpu ? kSubdivBudgetCpu : kSubdivBudgetGpu);
+        surfaces->update(frame * DemoScene::kSecondsPerFrame, mCamera, session.height(),
+                         session.capabilities().maxTessFactor, budget);
+        surfaceDraws = surfaces->draws();
+    }
     session.renderFrame(frame, mCamera, mSettings, mOptions.clearColor, mOptions.wireframe, readback,
-                        characters ? &draw : nullptr, mInstanced ? &crowdDraw : nullptr);
+                        characters ? &draw : nullptr, mInstanced ? &crowdDraw : nullptr, surfaceDraws);
 }
 
 } // namespace tessera::demo

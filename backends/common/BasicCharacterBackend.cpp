@@ -4,6 +4,7 @@
 #include "CrowdLod.h"
 #include "FrameUniforms.h"
 #include "tessera/character/CharacterAsset.h"
+#include "tessera/core/Log.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/tessellator/Tessellator.h"
 
@@ -51,6 +52,7 @@ void BasicCharacterBackend::destroyCharacter(backend::CharacterHandle handle) {
 void BasicCharacterBackend::shutdown() {
     if (mDevice) mDevice->waitIdle();
     mCharacters.clear();
+    mSubdivs.clear();
     BasicTerrainBackend::shutdown();
 }
 
@@ -126,6 +128,44 @@ Result<backend::CrowdHandle> BasicCharacterBackend::createCrowd(const backend::C
 
 Result<backend::CrowdTiers> BasicCharacterBackend::readCrowdTiers(backend::CrowdHandle) {
     return fail("backend ", capabilities(nullptr).name, " draws no instanced crowds");
+}
+
+Result<backend::SubdivHandle> BasicCharacterBackend::createSubdiv(const backend::SubdivDesc& desc) {
+    if (!capabilities(nullptr).subdiv)
+        return fail("backend ", capabilities(nullptr).name,
+                    " draws no subdivision surfaces (BackendCapabilities::subdiv)");
+    return mSubdivs.create(desc);
+}
+
+void BasicCharacterBackend::destroySubdiv(backend::SubdivHandle surface) {
+    mSubdivs.destroy(surface);
+}
+
+void BasicCharacterBackend::updateSubdivTiles(backend::SubdivHandle surface, const backend::SubdivTileData& tiles,
+                                              std::span<const glm::uvec4> rects) {
+    GpuSubdiv* s = mSubdivs.find(surface);
+    if (!s || rects.empty()) return;
+    suspendMainPass();
+    if (Status updated = s->updateTiles(*mFrame, tiles, rects); !updated)
+        log::error(updated.error().message);
+}
+
+void BasicCharacterBackend::drawSubdiv(backend::SubdivHandle surface, const backend::SubdivDrawInfo& draw) {
+    GpuSubdiv* s = mSubdivs.find(surface);
+    if (!s) return;
+    s->uploadCage(mFrame->slot(), draw.cage);
+    const gpu::UniformSlice uniforms = mFrame->pushUniform(draw.uniforms);
+    suspendMainPass();
+    subdivPrePasses(*s, uniforms);
+    ensureMainPass();
+    subdivDraw(*s, uniforms);
+    mReport.subdivDomains += s->domainCount();
+    mReport.intermediateBytes += s->bytes();
+    mReport.passes += 2;
+}
+
+Result<backend::SubdivPoints> BasicCharacterBackend::readSubdivPoints(backend::SubdivHandle surface) {
+    return mSubdivs.readPoints(surface);
 }
 
 CharacterPushFn BasicCharacterBackend::characterPush() {

@@ -12,6 +12,7 @@
 
 #include "BasicTerrainBackend.h"
 #include "GpuCharacter.h"
+#include "GpuSubdivSet.h"
 
 #include <functional>
 #include <memory>
@@ -64,6 +65,16 @@ public:
     void drawCrowd(backend::CrowdHandle, const backend::CrowdDrawInfo&) override {}
     Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle crowd) override;
 
+    // Subdivision surfaces: the handle table, uploads and the frame's order
+    // are shared; a backend that sets BackendCapabilities::subdiv supplies
+    // its refine (and level) passes and its tessellated draw.
+    Result<backend::SubdivHandle> createSubdiv(const backend::SubdivDesc& desc) override;
+    void destroySubdiv(backend::SubdivHandle surface) override;
+    void updateSubdivTiles(backend::SubdivHandle surface, const backend::SubdivTileData& tiles,
+                           std::span<const glm::uvec4> rects) override;
+    void drawSubdiv(backend::SubdivHandle surface, const backend::SubdivDrawInfo& draw) override;
+    Result<backend::SubdivPoints> readSubdivPoints(backend::SubdivHandle surface) override;
+
 protected:
     /// Buffer usage pass 1 writes compressed cages with (storage for compute,
     /// transform feedback, transfer destination for a render-target copy).
@@ -76,6 +87,18 @@ protected:
     /// Bytes of the technique's own character intermediates (render targets,
     /// pattern streams) beyond the compressed cages, for FrameReport.
     virtual uint64_t characterPassBytes() const { return 0; }
+
+    /// How the refine pass writes a surface's refined points (buffer usage).
+    virtual VkBufferUsageFlags subdivWriteUsage() const { return 0; }
+    /// Outside the main pass: refines `surface`'s points from the frame
+    /// slot's cage (and whatever else the technique prepares: levels,
+    /// records, commands), leaving them ready for the draw.
+    virtual void subdivPrePasses(GpuSubdiv&, const gpu::UniformSlice& /*uniforms*/) {}
+    /// Inside the main pass: tessellates, displaces and draws the surface.
+    virtual void subdivDraw(GpuSubdiv&, const gpu::UniformSlice& /*uniforms*/) {}
+    /// Makes the subdivision table (call from initializeTechnique of a
+    /// backend that draws surfaces).
+    void initializeSubdiv() { mSubdivs = GpuSubdivSet(*mDevice, subdivWriteUsage()); }
 
     /// Pushes the bindings every character pipeline shares (frame, character,
     /// palette, and the maps for `Draw`) plus `extra` (the cage and
@@ -90,6 +113,7 @@ protected:
 
 private:
     std::vector<std::unique_ptr<GpuCharacter>> mCharacters;
+    GpuSubdivSet mSubdivs;
 };
 
 } // namespace tessera::backends

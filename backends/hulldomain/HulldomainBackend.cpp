@@ -7,6 +7,7 @@
 #include "FrameUniforms.h"
 #include "GpuCrowdSet.h"
 #include "HulldomainCrowdPass.h"
+#include "HulldomainSubdivPass.h"
 #include "TessFactorPass.h"
 #include "tessera/backend/PluginApi.h"
 
@@ -30,6 +31,7 @@ public:
         caps.maxTessFactor = 64.0f;
         caps.terrainModes = 0b111;
         caps.crowd = true;
+        caps.subdiv = true;
         checkRequirements(device, caps);
         return caps;
     }
@@ -43,6 +45,9 @@ protected:
         mCrowds = GpuCrowdSet(*mDevice);
         mCrowdPass = HulldomainCrowdPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
                                          static_cast<VkFormat>(info.depthFormat));
+        mSubdivPass = HulldomainSubdivPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
+                                           static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
+        initializeSubdiv();
         const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
         mLayout = gpu::PipelineLayout(*mDevice,
                                       {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
@@ -85,6 +90,7 @@ protected:
         mCharacterPatches = {};
         mCrowds.clear();
         mCrowdPass = {};
+        mSubdivPass = {};
     }
 
 public:
@@ -120,6 +126,14 @@ public:
 protected:
 
     VkBufferUsageFlags compressedCageUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
+
+    VkBufferUsageFlags subdivWriteUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
+    void subdivPrePasses(GpuSubdiv& surface, const gpu::UniformSlice&) override {
+        mSubdivPass.recordRefine(*mFrame, surface);
+    }
+    void subdivDraw(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) override {
+        mSubdivPass.recordDraw(*mFrame, surface, mFrameUniforms, uniforms, mFrameInfo.wireframe);
+    }
 
     void skinCharacter(const CharacterInstance& instance) override {
         mCharacterSkin.record(*mFrame, instance, characterPush());
@@ -179,6 +193,7 @@ protected:
 private:
     TessFactorPass mFactorPass;
     HulldomainCrowdPass mCrowdPass;
+    HulldomainSubdivPass mSubdivPass;
     GpuCrowdSet mCrowds;
     CharacterSkinPass mCharacterSkin;
     CharacterPatchPass mCharacterPatches;

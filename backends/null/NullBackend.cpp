@@ -5,6 +5,7 @@
 #include "CrowdLod.h"
 #include "NullCrowd.h"
 #include "tessera/backend/CrowdChecks.h"
+#include "tessera/backend/SubdivChecks.h"
 #include "tessera/character/BakedAnimation.h"
 #include "tessera/backend/PluginApi.h"
 #include "tessera/character/CharacterAsset.h"
@@ -12,6 +13,8 @@
 #include "tessera/terrain/Terrain.h"
 #include "tessera/terrain/TessLevels.h"
 #include "tessera/tessellator/Tessellator.h"
+#include "tessera/subdiv/SubdivGpuMesh.h"
+#include "tessera/subdiv/SubdivLod.h"
 
 #include <algorithm>
 #include <array>
@@ -54,6 +57,7 @@ public:
         caps.requiresGpu = false;
         caps.maxTessFactor = kMaxTessFactor;
         caps.crowd = true;
+        caps.subdiv = true;
         caps.terrainModes = (1u << uint32_t(terrain::TerrainMode::LowRes)) |
                             (1u << uint32_t(terrain::TerrainMode::Continuous)) |
                             (1u << uint32_t(terrain::TerrainMode::Adaptive));
@@ -151,6 +155,41 @@ public:
         return crowd->tiers();
     }
 
+    Result<backend::SubdivHandle> createSubdiv(const backend::SubdivDesc& desc) override {
+        if (!mInitialized) return fail("null backend: createSubdiv before initialize");
+        if (Status ok = backend::checkSubdivDesc(desc); !ok) return ok.error();
+        auto surface = std::make_unique<NullSubdiv>();
+        surface->mesh = *desc.mesh;
+        surface->cage = desc.mesh->restPositions;
+        mSubdivs.push_back(std::move(surface));
+        return backend::SubdivHandle{static_cast<uint32_t>(mSubdivs.size() - 1)};
+    }
+
+    void destroySubdiv(backend::SubdivHandle handle) override {
+        if (handle.valid() && handle.id < mSubdivs.size()) mSubdivs[handle.id].reset();
+    }
+
+    void updateSubdivTiles(backend::SubdivHandle, const backend::SubdivTileData&, std::span<const glm::uvec4>) override {}
+
+    void drawSubdiv(backend::SubdivHandle handle, const backend::SubdivDrawInfo& draw) override {
+        NullSubdiv* surface = subdivOf(handle);
+        if (!surface) return;
+        if (draw.cage.size() == surface->cage.size())
+            for (size_t v = 0; v < draw.cage.size(); ++v) surface->cage[v] = glm::vec3(draw.cage[v]);
+        // What the GPU backends' refine pass and hull stage compute, on the CPU.
+        const subdiv::SubdivPrediction predicted =
+            subdiv::SubdivLod::predict(surface->mesh, surface->mesh.refine(surface->cage), draw.uniforms);
+        mReport.subdivDomains += surface->mesh.domainCount();
+        mReport.trianglesSubmitted += predicted.triangles;
+        mReport.passes += 2;
+    }
+
+    Result<backend::SubdivPoints> readSubdivPoints(backend::SubdivHandle handle) override {
+        NullSubdiv* surface = subdivOf(handle);
+        if (!surface) return fail("readSubdivPoints: no such surface");
+        return backend::SubdivPoints{surface->mesh.refine(surface->cage)};
+    }
+
     void beginFrame(const backend::FrameInfo& frame) override {
         mReport = {};
         mReport.frameIndex = frame.frameIndex;
@@ -197,6 +236,14 @@ public:
     backend::FrameReport lastFrameReport() override { return mLast; }
 
 private:
+    struct NullSubdiv {
+        subdiv::SubdivGpuMesh mesh;
+        std::vector<glm::vec3> cage;
+    };
+    NullSubdiv* subdivOf(backend::SubdivHandle handle) {
+        return handle.valid() && handle.id < mSubdivs.size() ? mSubdivs[handle.id].get() : nullptr;
+    }
+
     const terrain::Terrain* terrainOf(backend::TerrainHandle handle) const {
         return handle.valid() && handle.id < mTerrains.size() ? mTerrains[handle.id] : nullptr;
     }
@@ -204,6 +251,7 @@ private:
     std::vector<const terrain::Terrain*> mTerrains; ///< null once destroyed
     std::vector<const character::CharacterAsset*> mCharacters; ///< null once destroyed
     std::vector<std::unique_ptr<NullCrowd>> mCrowds;           ///< null once destroyed
+    std::vector<std::unique_ptr<NullSubdiv>> mSubdivs;         ///< null once destroyed
     terrain::TessView mView;
     backend::FrameReport mReport;
     backend::FrameReport mLast;

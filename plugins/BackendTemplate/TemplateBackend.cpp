@@ -41,6 +41,15 @@ public:
     Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle) override {
         return fail("this backend draws no instanced crowds");
     }
+    Result<backend::SubdivHandle> createSubdiv(const backend::SubdivDesc&) override {
+        return fail("this backend draws no subdivision surfaces");
+    }
+    void destroySubdiv(backend::SubdivHandle) override {}
+    void updateSubdivTiles(backend::SubdivHandle, const backend::SubdivTileData&, std::span<const glm::uvec4>) override {}
+    void drawSubdiv(backend::SubdivHandle, const backend::SubdivDrawInfo&) override {}
+    Result<backend::SubdivPoints> readSubdivPoints(backend::SubdivHandle) override {
+        return fail("this backend draws no subdivision surfaces");
+    }
     void endFrame() override {}
     backend::FrameReport lastFrameReport() override { return mReport; }
 

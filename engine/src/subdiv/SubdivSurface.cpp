@@ -142,6 +142,21 @@ Status SubdivSurface::updateControlPoints(std::span<const glm::vec3> basePositio
     return {};
 }
 
+RefineStencils SubdivSurface::refineStencils() const {
+    const Far::StencilTable& table = *mImpl->stencils;
+    RefineStencils result;
+    for (int i = 0; i < table.GetNumStencils(); ++i) {
+        const Far::Stencil stencil = table.GetStencil(Far::Index(i));
+        result.offsets.push_back(uint32_t(result.indices.size()));
+        result.sizes.push_back(uint32_t(stencil.GetSize()));
+        for (int k = 0; k < stencil.GetSize(); ++k) {
+            result.indices.push_back(uint32_t(stencil.GetVertexIndices()[k]));
+            result.weights.push_back(stencil.GetWeights()[k]);
+        }
+    }
+    return result;
+}
+
 const std::string& SubdivSurface::name() const {
     return mImpl->name;
 }

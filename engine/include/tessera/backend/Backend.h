@@ -26,6 +26,7 @@
 #include "tessera/backend/FrameInfo.h"
 #include "tessera/backend/FrameReport.h"
 #include "tessera/backend/Handles.h"
+#include "tessera/backend/SubdivDesc.h"
 #include "tessera/backend/TerrainDesc.h"
 #include "tessera/core/Result.h"
 

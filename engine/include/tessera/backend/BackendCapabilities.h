@@ -36,6 +36,8 @@ struct BackendCapabilities {
     /// Draws instanced crowds with GPU culling and LOD binning (createCrowd);
     /// hosts draw crowds through drawCharacters where it does not.
     bool crowd = false;
+    /// Draws Catmull-Clark surfaces with analytic displacement (createSubdiv).
+    bool subdiv = false;
     /// Bit (1 << TerrainMode) for each terrain mode the backend draws.
     uint32_t terrainModes = 1u << uint32_t(terrain::TerrainMode::LowRes);
     /// Empty when the backend can run on the device it was asked about;

@@ -32,6 +32,9 @@ struct FrameReport {
     /// commands, near slots, per-frame instances and the technique's own
     /// state and intermediate targets (also in intermediateBytes).
     uint64_t crowdBytes = 0;
+    /// Subdivision-surface tessellation domains submitted (before culling;
+    /// what tessellation made of them is in the passes' pipeline statistics).
+    uint32_t subdivDomains = 0;
     uint32_t passes = 0;
     /// Bytes of the backend's intermediate buffers and render targets (cage,
     /// factors, records, commands, pattern library), for the backend comparison.

@@ -15,6 +15,7 @@
 #include "tessera/subdiv/LimitPoint.h"
 #include "tessera/subdiv/ObjShape.h"
 #include "tessera/subdiv/PatchData.h"
+#include "tessera/subdiv/RefineStencils.h"
 #include "tessera/subdiv/SubdivSettings.h"
 
 #include <cstdint>
@@ -123,6 +124,10 @@ public:
     /// base vertices to every refined vertex and local point. Error: a
     /// count different from baseVertexCount() or a non-finite position.
     Status updateControlPoints(std::span<const glm::vec3> basePositions);
+    /// The stencils updateControlPoints applies, for a GPU that refines
+    /// the control points itself (factorized to base vertices, identity
+    /// rows for the base vertices first).
+    RefineStencils refineStencils() const;
 
     /// Evaluates patch `patch` (< patches().size()) at its own (s, t) in
     /// [0, 1]^2 (a tessellator's domain coordinate); derivatives are with

@@ -1,0 +1,106 @@
+#include "HulldomainSubdivPass.h"
+
+#include "CommandHelpers.h"
+#include "FrameUniforms.h"
+#include "tessera/gpu/Barriers.h"
+
+#include "subdiv.frag.spv.h"
+#include "subdiv_patch.tesc.spv.h"
+#include "subdiv_patch.tese.spv.h"
+#include "subdiv_patch.vert.spv.h"
+#include "subdiv_refine.comp.spv.h"
+
+namespace tessera::backends {
+
+namespace {
+constexpr VkPipelineStageFlags2 kDrawReads = VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT |
+                                             VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT |
+                                             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+}
+
+HulldomainSubdivPass::HulldomainSubdivPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat,
+                                           bool wireframe)
+    : mDevice(&device) {
+    const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
+    mRefineLayout = gpu::PipelineLayout(device,
+                                        {{TS_BINDING_SUBDIV_STENCILS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, compute},
+                                         {TS_BINDING_SUBDIV_ENTRIES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, compute},
+                                         {TS_BINDING_SUBDIV_CAGE, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, compute},
+                                         {TS_BINDING_SUBDIV_POINTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute}},
+                                        sizeof(uint32_t), compute, "hulldomain.subdivRefine.layout");
+    mRefine = gpu::ComputePipeline(device, mRefineLayout, subdiv_refine_comp_spv, "hulldomain.subdivRefine");
+
+    const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
+    std::vector<gpu::BindingDesc> bindings = GpuSubdiv::evalBindings(graphics);
+    bindings.push_back({TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics});
+    bindings.push_back({TS_BINDING_SUBDIV_SUPPORT, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, graphics});
+    mLayout = gpu::PipelineLayout(device, bindings, 0, 0, "hulldomain.subdiv.layout");
+    gpu::GraphicsPipelineDesc desc;
+    desc.layout = &mLayout;
+    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, subdiv_patch_vert_spv},
+                   {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, subdiv_patch_tesc_spv},
+                   {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, subdiv_patch_tese_spv},
+                   {VK_SHADER_STAGE_FRAGMENT_BIT, subdiv_frag_spv}};
+    desc.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
+    desc.patchControlPoints = 1;
+    // Domains are counter-clockwise seen from outside (ptex u, v follow the
+    // face's winding); Camera::projection's Y flip makes them clockwise on
+    // screen. Closed surfaces cull back faces; open ones draw both sides.
+    desc.frontFace = VK_FRONT_FACE_CLOCKWISE;
+    desc.colorFormats = {colorFormat};
+    desc.depthFormat = depthFormat;
+    for (int twoSided = 0; twoSided < 2; ++twoSided) {
+        desc.cullMode = twoSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+        const std::string base = std::string("hulldomain.subdiv.") + (twoSided ? "twoSided" : "closed");
+        desc.name = base + ".fill";
+        desc.polygonMode = VK_POLYGON_MODE_FILL;
+        mPipelines[twoSided][0] = gpu::Pipeline(device, desc);
+        if (wireframe) {
+            desc.name = base + ".wireframe";
+            desc.polygonMode = VK_POLYGON_MODE_LINE;
+            mPipelines[twoSided][1] = gpu::Pipeline(device, desc);
+        }
+    }
+}
+
+void HulldomainSubdivPass::recordRefine(gpu::FrameContext& frame, GpuSubdiv& surface) {
+    VkCommandBuffer cmd = frame.cmd();
+    gpu::PassScope pass(frame, "subdiv.refine");
+    // The previous frame's draw may still read the points (write after read).
+    gpu::memoryBarrier(cmd, kDrawReads, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mRefine.handle());
+    const VkBufferView stencils = surface.stencilsView(), entries = surface.entriesView();
+    const VkBufferView cage = surface.cageView(frame.slot());
+    const VkDescriptorBufferInfo points{surface.points().handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet writes[4] = {texelWrite(TS_BINDING_SUBDIV_STENCILS, &stencils),
+                                            texelWrite(TS_BINDING_SUBDIV_ENTRIES, &entries),
+                                            texelWrite(TS_BINDING_SUBDIV_CAGE, &cage),
+                                            bufferWrite(TS_BINDING_SUBDIV_POINTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &points)};
+    mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mRefineLayout.handle(), 0, 4, writes);
+    const uint32_t count = surface.refinedPointCount();
+    vkCmdPushConstants(cmd, mRefineLayout.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof count, &count);
+    vkCmdDispatch(cmd, (count + 63) / 64, 1, 1);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, kDrawReads,
+                       VK_ACCESS_2_SHADER_READ_BIT);
+}
+
+void HulldomainSubdivPass::recordDraw(gpu::FrameContext& frame, GpuSubdiv& surface,
+                                      const gpu::UniformSlice& frameUniforms, const gpu::UniformSlice& uniforms,
+                                      bool wireframe) {
+    VkCommandBuffer cmd = frame.cmd();
+    gpu::PassScope pass(frame, "subdiv.draw");
+    const int twoSided = surface.closed() ? 0 : 1;
+    const int wire = wireframe && mPipelines[twoSided][1].valid() ? 1 : 0;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines[twoSided][wire].handle());
+    std::vector<VkWriteDescriptorSet> writes = surface.evalWrites(uniforms);
+    const VkDescriptorBufferInfo frameInfo = frameUniforms.descriptor();
+    const VkBufferView support = surface.supportView();
+    writes.push_back(bufferWrite(TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &frameInfo));
+    writes.push_back(texelWrite(TS_BINDING_SUBDIV_SUPPORT, &support));
+    mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0,
+                                       uint32_t(writes.size()), writes.data());
+    vkCmdDraw(cmd, surface.domainCount(), 1, 0, 0);
+}
+
+} // namespace tessera::backends

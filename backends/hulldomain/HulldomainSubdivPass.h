@@ -1,0 +1,38 @@
+#pragma once
+/// @file HulldomainSubdivPass.h
+/// hulldomain's Catmull-Clark surfaces (the second paper, D3D11 style): a
+/// compute pass refines the control points and corner points from this
+/// frame's cage; then one patch per tessellation domain, whose hull stage
+/// sets the levels from its corners' per-vertex levels (or culls it) and
+/// whose domain stage evaluates the shared subdiv_eval.glsl at
+/// gl_TessCoord, levels up to 64.
+
+#include "GpuSubdiv.h"
+#include "tessera/gpu/ComputePipeline.h"
+#include "tessera/gpu/FrameContext.h"
+#include "tessera/gpu/Pipeline.h"
+#include "tessera/gpu/PipelineLayout.h"
+
+namespace tessera::backends {
+
+class HulldomainSubdivPass {
+public:
+    HulldomainSubdivPass() = default;
+    HulldomainSubdivPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat, bool wireframe);
+
+    /// "subdiv.refine", outside any render pass: leaves the refined points
+    /// ready for the draw's shader reads.
+    void recordRefine(gpu::FrameContext& frame, GpuSubdiv& surface);
+    /// "subdiv.draw", inside the main pass.
+    void recordDraw(gpu::FrameContext& frame, GpuSubdiv& surface, const gpu::UniformSlice& frameUniforms,
+                    const gpu::UniformSlice& uniforms, bool wireframe);
+
+private:
+    gpu::Device* mDevice = nullptr;
+    gpu::PipelineLayout mRefineLayout;
+    gpu::ComputePipeline mRefine;
+    gpu::PipelineLayout mLayout;
+    gpu::Pipeline mPipelines[2][2]; ///< [two-sided][wireframe]
+};
+
+} // namespace tessera::backends

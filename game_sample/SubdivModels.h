@@ -1,0 +1,97 @@
+#pragma once
+/// @file SubdivModels.h
+/// The characters scene's Catmull-Clark surfaces (--model FILE.obj, the
+/// second paper): each control mesh read with its OpenSubdiv tags, built
+/// into patches, given a procedural displacement in the paper's tile
+/// format, scaled to stand about 1.6 m tall on the terrain, its cage swaying
+/// gently; per frame the level of detail (subdiv::SubdivLod) within the
+/// frame's triangle budget and the backend's level cap.
+
+#include "DemoOptions.h"
+#include "tessera/backend/SubdivDesc.h"
+#include "tessera/core/Result.h"
+#include "tessera/scene/Aabb.h"
+#include "tessera/scene/Camera.h"
+#if __has_include("tessera/subdiv/DisplacementTiles.h")
+#include "tessera/subdiv/DisplacementTiles.h"
+#define TESSERA_HAVE_TILES 1
+#endif
+#include "tessera/subdiv/ObjShape.h"
+#include "tessera/subdiv/SubdivGpuMesh.h"
+#include "tessera/subdiv/SubdivLod.h"
+#include "tessera/subdiv/SubdivSurface.h"
+#include "tessera/terrain/Terrain.h"
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace tessera::demo {
+
+/// One surface's draw this frame.
+struct SubdivDraw {
+    backend::SubdivHandle handle;
+    backend::SubdivDrawInfo info;
+};
+
+class SubdivModels {
+public:
+    /// Reads and builds every file; stands them in a row centred on `site`
+    /// (x, z; the terrain's height below). Errors name the file.
+    static Result<std::unique_ptr<SubdivModels>> load(const DemoOptions& options, const terrain::Terrain& terrain,
+                                                      glm::vec2 site);
+
+    /// The row's world box (for framing the camera).
+    const scene::Aabb& bounds() const { return mBounds; }
+    size_t size() const { return mSurfaces.size(); }
+
+    /// What createSubdiv needs for surface `i` (valid while this lives).
+    backend::SubdivDesc desc(size_t i) const;
+    void setHandle(size_t i, backend::SubdivHandle handle) { mSurfaces[i].handle = handle; }
+
+    /// Animates the cages to `seconds` and plans each surface's level of
+    /// detail for `camera` on a `viewportHeight`-pixel target, with the
+    /// backend's `levelCap` and the frame's `budget` (triangles) shared by
+    /// all surfaces in proportion to what each would take.
+    void update(double seconds, const scene::Camera& camera, uint32_t viewportHeight, float levelCap,
+                uint64_t budget);
+    std::span<const SubdivDraw> draws() const { return mDraws; }
+    /// Triangles the CPU reference predicts for this frame's draws.
+    uint64_t predictedTriangles() const { return mPredicted; }
+
+private:
+    struct Surface {
+        std::string file;
+        subdiv::ObjShape shape;
+        std::unique_ptr<subdiv::SubdivSurface> surface;
+        subdiv::SubdivGpuMesh mesh;
+#ifdef TESSERA_HAVE_TILES
+        std::optional<subdiv::DisplacementTiles> tiles;
+#else
+        std::optional<int> tiles;
+#endif
+        std::vector<glm::uvec4> records;
+        float maxDisplacement = 0.0f;
+        glm::mat4 model{1.0f};
+        scene::Aabb box;       ///< object-space box of the displaced limit surface
+        glm::vec3 pivot{0.0f}; ///< object-space centre of the sway
+        float height = 1.0f;   ///< object-space height of the cage
+        backend::SubdivHandle handle;
+        std::vector<glm::vec3> pose;
+        std::vector<glm::vec4> cage;
+    };
+
+    SubdivModels() = default;
+    static Result<Surface> build(const std::string& file, const SubdivOptions& options);
+    void animate(Surface& s, double seconds) const;
+
+    SubdivOptions mOptions;
+    std::vector<Surface> mSurfaces;
+    std::vector<SubdivDraw> mDraws;
+    scene::Aabb mBounds;
+    uint64_t mPredicted = 0;
+};
+
+} // namespace tessera::demo
