@@ -2,10 +2,8 @@
 
 #include "tessera/core/Log.h"
 #include "tessera/profiler/CpuScope.h"
-#ifdef TESSERA_HAVE_TILES
 #include "tessera/subdiv/DisplacementConversion.h"
 #include "tessera/subdiv/ProceduralDisplacement.h"
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -39,9 +37,8 @@ Result<SubdivModels::Surface> SubdivModels::build(const std::string& file, const
     if (!mesh) return mesh.error();
     s.mesh = std::move(mesh).value();
 
-#ifdef TESSERA_HAVE_TILES
     if (options.amplitude > 0.0f) {
-        Result<subdiv::PtexTopology> topology = subdiv::PtexTopology::build(s.shape);
+        Result<subdiv::PtexTopology> topology = subdiv::PtexTopology::create(s.shape);
         if (!topology) return topology.error();
         std::vector<uint8_t> sizes = subdiv::DisplacementTiles::uniformLog2Sizes(topology.value(), kQuadTileLog2);
         Result<subdiv::DisplacementTiles> tiles =
@@ -55,7 +52,6 @@ Result<SubdivModels::Surface> SubdivModels::build(const std::string& file, const
         for (const shader::TileRecord& r : s.tiles->tileRecords()) s.records.push_back(r.data);
         for (float t : s.tiles->texels()) s.maxDisplacement = std::max(s.maxDisplacement, std::abs(t));
     }
-#endif
 
     // The limit surface's own box (sampled; the cage's is larger), grown by
     // the displacement, sets the size and where the surface stands.
@@ -122,14 +118,12 @@ backend::SubdivDesc SubdivModels::desc(size_t i) const {
     const Surface& s = mSurfaces[i];
     backend::SubdivDesc desc;
     desc.mesh = &s.mesh;
-#ifdef TESSERA_HAVE_TILES
     if (s.tiles) {
         desc.tiles.texels = s.tiles->texels();
         desc.tiles.width = s.tiles->textureWidth();
         desc.tiles.height = s.tiles->textureHeight();
         desc.tiles.records = s.records;
     }
-#endif
     return desc;
 }
 

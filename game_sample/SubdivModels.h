@@ -12,10 +12,7 @@
 #include "tessera/core/Result.h"
 #include "tessera/scene/Aabb.h"
 #include "tessera/scene/Camera.h"
-#if __has_include("tessera/subdiv/DisplacementTiles.h")
 #include "tessera/subdiv/DisplacementTiles.h"
-#define TESSERA_HAVE_TILES 1
-#endif
 #include "tessera/subdiv/ObjShape.h"
 #include "tessera/subdiv/SubdivGpuMesh.h"
 #include "tessera/subdiv/SubdivLod.h"
@@ -67,11 +64,7 @@ private:
         subdiv::ObjShape shape;
         std::unique_ptr<subdiv::SubdivSurface> surface;
         subdiv::SubdivGpuMesh mesh;
-#ifdef TESSERA_HAVE_TILES
         std::optional<subdiv::DisplacementTiles> tiles;
-#else
-        std::optional<int> tiles;
-#endif
         std::vector<glm::uvec4> records;
         float maxDisplacement = 0.0f;
         glm::mat4 model{1.0f};
