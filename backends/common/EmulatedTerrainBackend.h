@@ -63,6 +63,21 @@ protected:
     /// Bytes of the backend's own character pass 1 targets (r2vb's render target).
     virtual uint64_t characterSkinBytes() const { return 0; }
 
+    /// Subdivision surfaces on the emulated tessellator. A backend that sets
+    /// BackendCapabilities::subdiv implements both, outside the main pass:
+    /// refine `surface.points()` from the frame slot's cage with its era's
+    /// means (the same tsSubdivRefinePoint of subdiv_refine.glsl), leaving
+    /// them ready for VERTEX_SHADER reads; then, per domain, a record and
+    /// five commands (the EmulatedDrawSource contract above; patch index =
+    /// domain index) from tsSubdivLevels of subdiv_levels.glsl, levels
+    /// clamped to [1, TS_EMU_MAX_LEVEL], culled domains all-zero commands.
+    /// Per-surface buffers go in a GpuSubdiv::Extension.
+    virtual void recordSubdivRefine(GpuSubdiv& /*surface*/) {}
+    virtual EmulatedDrawSource recordSubdivFactorPasses(GpuSubdiv& /*surface*/,
+                                                        const gpu::UniformSlice& /*subdivUniforms*/) {
+        return {};
+    }
+
     /// Bytes of the pattern buffers (shared by every frame).
     uint64_t patternBytes() const;
     /// The pattern library's key table (shader::TsEmuKeyTable), a uniform

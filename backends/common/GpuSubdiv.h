@@ -29,6 +29,13 @@ namespace tessera::backends {
 
 class GpuSubdiv {
 public:
+    /// A backend's own per-surface resources (its records, commands and
+    /// render targets), owned by the surface so they are released with it,
+    /// after the frames that used them have retired.
+    struct Extension {
+        virtual ~Extension() = default;
+    };
+
     /// `writeUsage`: how the backend's refine pass writes the refined
     /// points (storage, transform feedback, or transfer from a target).
     /// Errors name the surface and the device limit it exceeds.
@@ -77,6 +84,10 @@ public:
     /// Device bytes of everything above.
     uint64_t bytes() const;
 
+    /// The backend's extension (null until it attaches one).
+    Extension* extension() const { return mExtension.get(); }
+    void attach(std::unique_ptr<Extension> extension) { mExtension = std::move(extension); }
+
 private:
     GpuSubdiv() = default;
 
@@ -97,6 +108,7 @@ private:
     VkDescriptorBufferInfo mUniformInfo{};
     VkDescriptorImageInfo mTileInfo{};
     std::array<VkBufferView, 6> mViews{};
+    std::unique_ptr<Extension> mExtension;
 };
 
 } // namespace tessera::backends
