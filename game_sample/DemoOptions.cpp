@@ -221,7 +221,8 @@ Subdivision surfaces (--model FILE.obj; the second paper, docs/SUBDIV.md):
   --subdiv-pixels PX    screen-space level of detail: pixels per
                         tessellated segment (default 6)
   --subdiv-level L      one level everywhere instead (1 to the backend's
-                        maximum), for measurements
+                        maximum), for measurements; A:B sweeps it from A
+                        to B over the run's frames
   --subdiv-budget T     tessellated triangles per frame, all surfaces
                         (default: 150000 on lavapipe, 4000000 on a GPU);
                         levels scale down to fit
@@ -351,10 +352,17 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
             o.subdiv.view = uint32_t(it - std::begin(views));
         }
         else if (flag == "--subdiv-level") {
+            // L, or A:B for a sweep from A to B over the run's frames.
             TESSERA_TAKE(text);
-            auto n = parseNumber(flag, text, 1.0f, 64.0f);
+            const size_t colon = text.find(':');
+            auto n = parseNumber(flag, text.substr(0, colon), 1.0f, 64.0f);
             if (!n) return n.error();
             o.subdiv.level = n.value();
+            if (colon != std::string::npos) {
+                auto end = parseNumber(flag, text.substr(colon + 1), 1.0f, 64.0f);
+                if (!end) return end.error();
+                o.subdiv.levelEnd = end.value();
+            }
         }
         else if (flag == "--subdiv-pixels") {
             TESSERA_TAKE(text);

@@ -23,6 +23,7 @@ namespace tessera::demo {
 struct SubdivOptions {
     uint32_t normals = 0;               ///< --normals approximate (0) | accurate (1): TS_SUBDIV_NORMALS_*
     std::optional<float> level;         ///< --subdiv-level L: one level everywhere (measurements)
+    std::optional<float> levelEnd;      ///< --subdiv-level A:B: the level swept from A to B over the run
     std::optional<float> pixels;        ///< --subdiv-pixels PX: target pixels per tessellated segment
     uint32_t view = 0;                  ///< --subdiv-view shaded|patches|levels|mips: TS_SUBDIV_VIEW_*
     bool mips = true;                   ///< --no-mips: sample the finest displacement level everywhere

@@ -57,6 +57,9 @@ Result<std::unique_ptr<DemoScene>> DemoScene::load(const DemoOptions& options, u
             auto surfaces = SubdivModels::load(options, ground, glm::vec2(site.x, site.z));
             if (!surfaces) return surfaces.error();
             scene->mSurfaces = std::move(surfaces.value());
+            if (options.subdiv.levelEnd)
+                scene->mSurfaces->sweepLevel(*options.subdiv.levelEnd,
+                                             double(frames > 1 ? frames - 1 : 1) * kSecondsPerFrame);
             crowd.value()->frameAlso(scene->mSurfaces->bounds());
         }
         scene->mCharacters = std::move(crowd.value());

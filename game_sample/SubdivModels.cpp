@@ -149,7 +149,10 @@ void SubdivModels::update(double seconds, const scene::Camera& camera, uint32_t 
     subdiv::SubdivLodSettings settings;
     settings.targetPixels = mOptions.pixels.value_or(settings.targetPixels);
     settings.levelCap = levelCap;
-    settings.fixedLevel = mOptions.level ? std::min(*mOptions.level, levelCap) : 0.0f;
+    float level = mOptions.level.value_or(0.0f);
+    if (mOptions.level && mLevelEnd && mSweepSeconds > 0.0)
+        level += (*mLevelEnd - level) * float(std::clamp(seconds / mSweepSeconds, 0.0, 1.0));
+    settings.fixedLevel = mOptions.level ? std::min(level, levelCap) : 0.0f;
     settings.mipSelection = mOptions.mips;
     settings.normals = mOptions.normals;
     settings.view = mOptions.view;

@@ -55,6 +55,11 @@ public:
     void update(double seconds, const scene::Camera& camera, uint32_t viewportHeight, float levelCap,
                 uint64_t budget);
     std::span<const SubdivDraw> draws() const { return mDraws; }
+    /// --subdiv-level A:B: the fixed level goes from A to B over `seconds`.
+    void sweepLevel(float end, double seconds) {
+        mLevelEnd = end;
+        mSweepSeconds = seconds;
+    }
     /// Triangles the CPU reference predicts for this frame's draws.
     uint64_t predictedTriangles() const { return mPredicted; }
 
@@ -85,6 +90,8 @@ private:
     std::vector<SubdivDraw> mDraws;
     scene::Aabb mBounds;
     uint64_t mPredicted = 0;
+    std::optional<float> mLevelEnd;
+    double mSweepSeconds = 0.0;
 };
 
 } // namespace tessera::demo
