@@ -232,6 +232,9 @@ Subdivision surfaces (--model FILE.obj; the second paper, docs/SUBDIV.md):
                         depth, end caps red) | levels | mips
   --subdiv-amplitude A  procedural displacement, fraction of the shape's
                         diagonal (default 0.02; 0: the base surface)
+  --sculpt raise|lower  a scripted brush stroke around each surface, one
+                        dab a frame: the touched tiles, their mips and
+                        overlaps are rederived and re-uploaded
   --subdiv-still        keep the control cages in their rest pose (they
                         sway by default)
 
@@ -384,6 +387,12 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         }
         else if (flag == "--no-mips") o.subdiv.mips = false;
         else if (flag == "--subdiv-still") o.subdiv.animate = false;
+        else if (flag == "--sculpt") {
+            TESSERA_TAKE(v);
+            if (v == "raise") o.subdiv.sculpt = 1;
+            else if (v == "lower") o.subdiv.sculpt = -1;
+            else return fail("--sculpt expects raise or lower, got \"", v, "\"");
+        }
         else if (flag == "--scene") {
             TESSERA_TAKE(v);
             if (v != "terrain" && v != "characters" && v != "crowd")

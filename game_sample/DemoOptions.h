@@ -30,6 +30,7 @@ struct SubdivOptions {
     std::optional<uint64_t> budget;     ///< --subdiv-budget T: tessellated triangles per frame, all surfaces
     float amplitude = 0.02f;            ///< --subdiv-amplitude A: procedural displacement, fraction of the diagonal
     bool animate = true;                ///< --subdiv-still: the cages keep their rest pose
+    int sculpt = 0;                     ///< --sculpt raise|lower: +1 / -1, a scripted stroke, one dab a frame
 };
 
 /// Meteor impacts over a crowd-scene run when --meteors is not given.

@@ -185,7 +185,10 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
         if (mTerrainVisible) backend.drawTerrain(mTerrainHandle, {mVisible, settings});
         if (characters) backend.drawCharacters(*characters);
         if (crowd && mCrowd.valid()) backend.drawCrowd(mCrowd, *crowd);
-        for (const SubdivDraw& surface : surfaces) backend.drawSubdiv(surface.handle, surface.info);
+        for (const SubdivDraw& surface : surfaces) {
+            if (!surface.tileRects.empty()) backend.updateSubdivTiles(surface.handle, surface.tiles, surface.tileRects);
+            backend.drawSubdiv(surface.handle, surface.info);
+        }
         backend.endFrame();
     }
     if (mScheduler) {

@@ -37,7 +37,8 @@ Result<SubdivModels::Surface> SubdivModels::build(const std::string& file, const
     if (!mesh) return mesh.error();
     s.mesh = std::move(mesh).value();
 
-    if (options.amplitude > 0.0f) {
+    // Sculpting needs tiles even over the bare base surface.
+    if (options.amplitude > 0.0f || options.sculpt != 0) {
         Result<subdiv::PtexTopology> topology = subdiv::PtexTopology::create(s.shape);
         if (!topology) return topology.error();
         std::vector<uint8_t> sizes = subdiv::DisplacementTiles::uniformLog2Sizes(topology.value(), kQuadTileLog2);
@@ -51,6 +52,7 @@ Result<SubdivModels::Surface> SubdivModels::build(const std::string& file, const
         s.tiles = std::move(tiles).value();
         for (const shader::TileRecord& r : s.tiles->tileRecords()) s.records.push_back(r.data);
         for (float t : s.tiles->texels()) s.maxDisplacement = std::max(s.maxDisplacement, std::abs(t));
+        if (options.sculpt != 0) s.brush.emplace(*s.surface, *s.tiles);
     }
 
     // The limit surface's own box (sampled; the cage's is larger), grown by
@@ -139,6 +141,28 @@ void SubdivModels::animate(Surface& s, double seconds) const {
     }
 }
 
+std::vector<glm::uvec4> SubdivModels::sculpt(Surface& s) {
+    if (!s.brush || !s.tiles) return {};
+    TESSERA_CPU_SCOPE("subdiv.sculpt");
+    // The stroke circles the surface at mid-height, waving up and down, in
+    // steps shorter than the dab's radius so the dabs merge into a ridge
+    // (raise) or a groove (lower).
+    const glm::vec3 extent = s.box.max - s.box.min;
+    const float size = std::max({extent.x, extent.y, extent.z});
+    const float angle = 0.12f * float(mDabs);
+    const glm::vec3 target = s.box.center() + glm::vec3(0.75f * size * std::cos(angle),
+                                                        0.15f * extent.y * std::sin(3.0f * angle),
+                                                        0.75f * size * std::sin(angle));
+    subdiv::SculptDab dab;
+    dab.centre = s.brush->nearestSurfacePoint(target);
+    dab.radius = 0.12f * size;
+    dab.amount = float(mOptions.sculpt) * 0.015f * size;
+    const subdiv::TileUpdate update = s.brush->apply(*s.tiles, dab);
+    // Culling grows with what the brush may have added.
+    s.maxDisplacement += std::abs(dab.amount);
+    return subdiv::SculptBrush::uploadRects(*s.tiles, update);
+}
+
 void SubdivModels::update(double seconds, const scene::Camera& camera, uint32_t viewportHeight, float levelCap,
                           uint64_t budget) {
     TESSERA_CPU_SCOPE("subdiv.lod");
@@ -167,9 +191,11 @@ void SubdivModels::update(double seconds, const scene::Camera& camera, uint32_t 
         return subdiv::SubdivLod::plan(s.mesh, base, s.model, view, settings);
     };
     std::vector<subdiv::SubdivLodFrame> frames;
+    std::vector<std::vector<glm::uvec4>> rewritten;
     uint64_t wanted = 0;
     for (Surface& s : mSurfaces) {
         animate(s, seconds);
+        rewritten.push_back(sculpt(s));
         frames.push_back(plan(s, budget));
         wanted += frames.back().prediction.triangles;
     }
@@ -179,9 +205,13 @@ void SubdivModels::update(double seconds, const scene::Camera& camera, uint32_t 
     mDraws.clear();
     mPredicted = 0;
     for (size_t i = 0; i < mSurfaces.size(); ++i) {
-        mDraws.push_back({mSurfaces[i].handle, {frames[i].uniforms, mSurfaces[i].cage}});
+        Surface& s = mSurfaces[i];
+        SubdivDraw draw{s.handle, {frames[i].uniforms, s.cage}, {}, std::move(rewritten[i])};
+        if (!draw.tileRects.empty()) draw.tiles = desc(i).tiles;
+        mDraws.push_back(std::move(draw));
         mPredicted += frames[i].prediction.triangles;
     }
+    if (mOptions.sculpt != 0) ++mDabs;
 }
 
 } // namespace tessera::demo

@@ -14,6 +14,7 @@
 #include "tessera/scene/Camera.h"
 #include "tessera/subdiv/DisplacementTiles.h"
 #include "tessera/subdiv/ObjShape.h"
+#include "tessera/subdiv/SculptBrush.h"
 #include "tessera/subdiv/SubdivGpuMesh.h"
 #include "tessera/subdiv/SubdivLod.h"
 #include "tessera/subdiv/SubdivSurface.h"
@@ -31,6 +32,10 @@ namespace tessera::demo {
 struct SubdivDraw {
     backend::SubdivHandle handle;
     backend::SubdivDrawInfo info;
+    /// Tiles a sculpt dab rewrote this frame: re-upload these texel
+    /// rectangles of `tiles` before the draw (empty: nothing changed).
+    backend::SubdivTileData tiles;
+    std::vector<glm::uvec4> tileRects;
 };
 
 class SubdivModels {
@@ -79,11 +84,14 @@ private:
         backend::SubdivHandle handle;
         std::vector<glm::vec3> pose;
         std::vector<glm::vec4> cage;
+        std::optional<subdiv::SculptBrush> brush; ///< --sculpt
     };
 
     SubdivModels() = default;
     static Result<Surface> build(const std::string& file, const SubdivOptions& options);
     void animate(Surface& s, double seconds) const;
+    /// --sculpt: this frame's dab on `s`; the texel rectangles to re-upload.
+    std::vector<glm::uvec4> sculpt(Surface& s);
 
     SubdivOptions mOptions;
     std::vector<Surface> mSurfaces;
@@ -92,6 +100,7 @@ private:
     uint64_t mPredicted = 0;
     std::optional<float> mLevelEnd;
     double mSweepSeconds = 0.0;
+    uint32_t mDabs = 0;
 };
 
 } // namespace tessera::demo

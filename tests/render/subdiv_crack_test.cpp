@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -47,19 +48,22 @@ struct Sweep {
     const char* levels;    ///< --subdiv-level A:B
     const char* amplitude; ///< --subdiv-amplitude
     int frames;
+    const char* sculpt = nullptr; ///< --sculpt raise|lower, or none
 };
 
 /// Runs one shape through a sweep and checks every recorded frame; returns
 /// the number of frames that failed.
 int sweepShape(const std::string& backend, const std::string& shape, const Sweep& sweep) {
     const fs::path obj = sharedTestdataDir() / "osd_shapes" / (shape + ".obj");
-    const std::string tag = backend + "_" + shape + "_a" + sweep.amplitude + "_l" + sweep.levels;
+    std::string tag = backend + "_" + shape + "_a" + sweep.amplitude + "_l" + sweep.levels;
+    if (sweep.sculpt) tag += std::string("_") + sweep.sculpt;
     const fs::path dir = testOutputDir("subdiv_crack") / tag;
     fs::remove_all(dir);
     std::vector<std::string> args =
         soloCharacterArgs(backend, obj.string(), "1,0,1", "2.5", kWidth, kHeight);
     args.insert(args.end(), {"--frames", std::to_string(sweep.frames), "--subdiv-level", sweep.levels,
                              "--subdiv-amplitude", sweep.amplitude, "--record", dir.string(), "--validation"});
+    if (sweep.sculpt) args.insert(args.end(), {"--sculpt", sweep.sculpt});
     const std::string command = demoCommandLine(args);
     const ProcessResult result = runDemo(args);
     EXPECT_EQ(result.exitCode, 0) << command << "\n" << result.output;
@@ -113,6 +117,20 @@ TEST_P(SubdivCrack, DisplacedSurfaceHasNoCracksAtAnyLevel) {
     EXPECT_EQ(sweepAll(GetParam(), {"1:14.99", "0.03", 5}), 0);
 }
 
+// After sculpt strokes (one dab a frame, re-uploading the rewritten tiles
+// with their mips and the neighbours' overlaps): on quads alone, on a mesh
+// with non-quads (tiles of two sizes meeting: quads 16, sub-faces 8) and on
+// the pyramid's extraordinary apex.
+TEST_P(SubdivCrack, SculptedSurfaceHasNoCracks) {
+    int failures = 0;
+    for (const char* shape : {"catmark_cube", "catmark_nonquads", "catmark_pyramid"}) {
+        SCOPED_TRACE(shape);
+        failures += sweepShape(GetParam(), shape, {"1:14.99", "0.02", 12, "raise"});
+        failures += sweepShape(GetParam(), shape, {"14.99:3", "0.02", 12, "lower"});
+    }
+    EXPECT_EQ(failures, 0);
+}
+
 // hulldomain's hardware tessellator above the emulated range, to 64.
 TEST(SubdivCrackHardware, DisplacedSurfaceHasNoCracksUpTo64) {
     EXPECT_EQ(sweepAll("hulldomain", {"14.99:64", "0.03", 3}), 0);
@@ -120,3 +138,29 @@ TEST(SubdivCrackHardware, DisplacedSurfaceHasNoCracksUpTo64) {
 
 INSTANTIATE_TEST_SUITE_P(EveryBackend, SubdivCrack, ::testing::Values("hulldomain"),
                          [](const auto& test) { return test.param; });
+
+// The stroke shows: the last frame of a sculpted run differs from the same
+// run without the brush over a band of the surface, not just a few pixels.
+TEST(SubdivSculpt, TheStrokeShowsInTheNextFrames) {
+    const fs::path obj = sharedTestdataDir() / "osd_shapes" / "catmark_cube.obj";
+    auto shoot = [&](bool sculpt) {
+        std::vector<std::string> args = soloCharacterArgs("hulldomain", obj.string(), "1,0,1", "2.5", kWidth, kHeight);
+        args.insert(args.end(), {"--frames", "20", "--subdiv-still"});
+        if (sculpt) args.insert(args.end(), {"--sculpt", "raise"});
+        return runDemoShot(args, testOutputDir("subdiv_sculpt") / (sculpt ? "raised.png" : "plain.png"));
+    };
+    const DemoShot plain = shoot(false), raised = shoot(true);
+    ASSERT_TRUE(plain.image && raised.image) << plain.command << "\n" << plain.result.output << "\n"
+                                             << raised.command << "\n" << raised.result.output;
+    EXPECT_TRUE(validationClean(raised.result)) << raised.result.output;
+    size_t changed = 0;
+    const std::vector<uint8_t>& a = plain.image->pixels;
+    const std::vector<uint8_t>& b = raised.image->pixels;
+    for (size_t i = 0; i + 3 < a.size(); i += 4) {
+        int most = 0;
+        for (int c = 0; c < 3; ++c) most = std::max(most, std::abs(int(a[i + c]) - int(b[i + c])));
+        changed += most > 8;
+    }
+    std::cout << "[subdiv sculpt] " << changed << " pixels changed by the stroke\n";
+    EXPECT_GT(changed, 1000u) << "the stroke barely shows\n  " << raised.command;
+}
