@@ -4,6 +4,7 @@
 #include "CharacterBenchmark.h"
 #include "CrowdBenchmark.h"
 #include "CrowdRenderBenchmark.h"
+#include "SubdivBenchmark.h"
 #include "DemoOutputs.h"
 #include "DemoScene.h"
 #include "InstancedCrowd.h"
@@ -94,6 +95,7 @@ int runDemo(const DemoOptions& options) {
                      : options.bench == "characters" ? runCharacterBenchmark(options)
                      : options.bench == "crowd-sim"  ? runCrowdBenchmark(options)
                      : options.bench == "crowd"      ? runCrowdRenderBenchmark(options)
+                     : options.bench == "subdiv"     ? runSubdivBenchmark(options)
                                                      : runTerrainBenchmark(options);
         if (!ran) {
             log::error(ran.error().message);

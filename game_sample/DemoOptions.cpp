@@ -114,7 +114,7 @@ by default, on the best Vulkan device (a GPU, else lavapipe).
 Backend and device:
   --backend NAME        r2vb | streamout | hulldomain | null (default: the
                         most capable backend the device can run); with
-                        --bench terrain, characters or crowd also "all": every GPU
+                        --bench terrain, characters, crowd or subdiv also "all": every GPU
                         backend side by side
   --list-backends       list backends and their capabilities on the device
   --device NAME|INDEX   pick a Vulkan device by index or name substring
@@ -291,6 +291,14 @@ Output:
                         CPU frame ms, simulation ms, instances and
                         triangles per tier, GPU memory per agent and the
                         ratios to hulldomain and to the terrain alone
+  --bench subdiv        the second paper's section 7: every --model .obj
+                        surface on each backend (or --backend all), the base
+                        surface, displaced, displaced with the level of
+                        detail and with the Weingarten term, at the shared
+                        level 14.99 (and --subdiv-level where a backend goes
+                        higher); GPU ms of the subdivision passes, ratios to
+                        the base surface, triangles, tile memory against a
+                        dense mesh and atlas maps
   --steps N             --bench crowd-sim's measured steps
   --out FILE            where --bench writes its JSON (default: stdout)
   --out-dir DIR         where --bench writes its per-backend traces,
@@ -498,9 +506,9 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         else if (flag == "--out-dir") { TESSERA_TAKE(v); o.benchOutDir = v; }
         else if (flag == "--bench") {
             TESSERA_TAKE(v);
-            if (v != "terrain" && v != "characters" && v != "crowd" && v != "crowd-sim")
-                return fail("--bench expects \"terrain\", \"characters\", \"crowd\" or \"crowd-sim\", got \"", v,
-                            "\"");
+            if (v != "terrain" && v != "characters" && v != "crowd" && v != "crowd-sim" && v != "subdiv")
+                return fail("--bench expects \"terrain\", \"characters\", \"crowd\", \"crowd-sim\" or \"subdiv\", got \"",
+                            v, "\"");
             o.bench = v;
         } else if (flag == "--terrain-mode") {
             TESSERA_TAKE(v);

@@ -129,6 +129,22 @@ backend::SubdivDesc SubdivModels::desc(size_t i) const {
     return desc;
 }
 
+std::pair<uint64_t, uint64_t> SubdivModels::tileFigures() const {
+    uint64_t samples = 0, bytes = 0;
+    for (const Surface& s : mSurfaces) {
+        if (!s.tiles) continue;
+        samples += s.tiles->allCoefficients().size();
+        bytes += s.tiles->texels().size() * sizeof(float) + s.records.size() * sizeof(glm::uvec4);
+    }
+    return {samples, bytes};
+}
+
+uint32_t SubdivModels::domainCount() const {
+    uint32_t domains = 0;
+    for (const Surface& s : mSurfaces) domains += s.mesh.domainCount();
+    return domains;
+}
+
 void SubdivModels::animate(Surface& s, double seconds) const {
     // A sway about the vertical axis through the base, growing with height:
     // every control point moves, so the GPU refines a new surface each frame.

@@ -65,6 +65,11 @@ public:
         mLevelEnd = end;
         mSweepSeconds = seconds;
     }
+    /// Every surface's displacement: tile samples (coefficients), and the
+    /// bytes of the packed texture and records.
+    std::pair<uint64_t, uint64_t> tileFigures() const;
+    /// Domains of every surface.
+    uint32_t domainCount() const;
     /// Triangles the CPU reference predicts for this frame's draws.
     uint64_t predictedTriangles() const { return mPredicted; }
 

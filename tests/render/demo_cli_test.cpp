@@ -55,7 +55,7 @@ TEST(DemoCli, BadTerrainFlagsFailClearly) {
     expectUsageError({"--splat", "1,2,-5"}, "--splat expects x,z,radius[,depth]");
     expectUsageError({"--splat", "1,2,3,-1"}, "--splat expects x,z,radius[,depth]");
     expectUsageError({"--splat", "a,b,c"}, "--splat expects x,z,radius[,depth]");
-    expectUsageError({"--bench", "foo"}, "--bench expects \"terrain\", \"characters\", \"crowd\" or \"crowd-sim\", got \"foo\"");
+    expectUsageError({"--bench", "foo"}, "--bench expects \"terrain\", \"characters\", \"crowd\", \"crowd-sim\" or \"subdiv\", got \"foo\"");
     expectUsageError({"--meteors", "-1"}, "--meteors expects a whole number");
 }
 
