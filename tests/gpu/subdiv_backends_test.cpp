@@ -6,11 +6,16 @@
 //  - one surface drawn with the same uniforms (levels capped at 14.99, the
 //    emulated tessellator's range, so all three tessellate alike) gives the
 //    same image on streamout and r2vb as on hulldomain.
-// Shapes: the cube, a hole, creases and a mesh with non-quad faces.
+// Shapes: the cube, a hole, creases and a mesh with non-quad faces, and two
+// of them with displacement tiles (the paper's displaced surface: the
+// evaluation samples and blends the tiles' mip levels from the levels).
 #include "GpuTestDevice.h"
 #include "SubdivTestHost.h"
 
 #include "tessera/core/ImageFile.h"
+#include "tessera/subdiv/DisplacementConversion.h"
+#include "tessera/subdiv/DisplacementTiles.h"
+#include "tessera/subdiv/ProceduralDisplacement.h"
 #include "tessera/subdiv/ObjShape.h"
 #include "tessera/subdiv/SubdivGpuMesh.h"
 #include "tessera/subdiv/SubdivLod.h"
@@ -38,14 +43,48 @@ namespace {
 constexpr uint32_t kWidth = 320, kHeight = 240;
 const char* const kShapes[] = {"catmark_cube", "catmark_hole_test1", "catmark_cube_creases1", "catmark_nonquads"};
 const char* const kEmulated[] = {"streamout", "r2vb"};
+const std::pair<const char*, bool> kImageCases[] = {{"catmark_cube", false},          {"catmark_hole_test1", false},
+                                                    {"catmark_cube_creases1", false}, {"catmark_nonquads", false},
+                                                    {"catmark_cube", true},           {"catmark_cube_creases1", true}};
 
 struct Shape {
     subdiv::SubdivGpuMesh mesh;
     glm::mat4 model{1.0f};
     float diagonal = 1.0f;
+    // Displacement tiles (empty: the base surface).
+    std::vector<float> texels;
+    uint32_t tileWidth = 0, tileHeight = 0;
+    std::vector<glm::uvec4> records;
+    float maxDisplacement = 0.0f;
+
+    backend::SubdivDesc desc() const {
+        backend::SubdivDesc d;
+        d.mesh = &mesh;
+        d.tiles = {texels, tileWidth, tileHeight, records};
+        return d;
+    }
 };
 
-Shape loadShape(const std::string& name) {
+/// Procedural displacement of 3 % of the diagonal in 16 x 16 tiles, as the
+/// demo's --model does.
+void addDisplacement(Shape& s, const subdiv::ObjShape& shape, const subdiv::SubdivSurface& surface) {
+    auto topology = subdiv::PtexTopology::create(shape);
+    ASSERT_TRUE(topology) << topology.error().message;
+    std::vector<uint8_t> sizes = subdiv::DisplacementTiles::uniformLog2Sizes(topology.value(), 4);
+    auto tiles = subdiv::DisplacementTiles::create(std::move(topology).value(), std::move(sizes));
+    ASSERT_TRUE(tiles) << tiles.error().message;
+    subdiv::ProceduralDisplacement::Settings settings;
+    settings.amplitude = 0.03;
+    const subdiv::ProceduralDisplacement procedural(surface, settings);
+    subdiv::convertDisplacement(tiles.value(), procedural.sampler());
+    s.texels.assign(tiles.value().texels().begin(), tiles.value().texels().end());
+    s.tileWidth = tiles.value().textureWidth();
+    s.tileHeight = tiles.value().textureHeight();
+    for (const shader::TileRecord& r : tiles.value().tileRecords()) s.records.push_back(r.data);
+    for (float t : s.texels) s.maxDisplacement = std::max(s.maxDisplacement, std::abs(t));
+}
+
+Shape loadShape(const std::string& name, bool displaced = false) {
     Shape s;
     const std::filesystem::path file = std::filesystem::path(TESSERA_TESTDATA_DIR) / "osd_shapes" / (name + ".obj");
     auto shape = subdiv::readObjShape(file);
@@ -58,6 +97,7 @@ Shape loadShape(const std::string& name) {
     EXPECT_TRUE(mesh) << mesh.error().message;
     if (!mesh) return s;
     s.mesh = std::move(mesh).value();
+    if (displaced) addDisplacement(s, shape.value(), surface.value());
     // Centred at the origin, its largest side 1.
     const glm::vec3 extent = s.mesh.bounds.max - s.mesh.bounds.min;
     const float largest = std::max({extent.x, extent.y, extent.z, 1e-6f});
@@ -87,6 +127,8 @@ backend::SubdivDrawInfo drawInfo(const Shape& shape, const scene::Camera& camera
     subdiv::SubdivLodSettings settings;
     settings.levelCap = TS_EMU_MAX_LEVEL;
     settings.targetPixels = 4.0f;
+    settings.displacementScale = shape.texels.empty() ? 0.0f : 1.0f;
+    settings.maxDisplacement = shape.maxDisplacement;
     backend::SubdivDrawInfo info;
     info.uniforms = subdiv::SubdivLod::plan(shape.mesh, shape.mesh.restPositions, shape.model, view, settings).uniforms;
     return info;
@@ -122,9 +164,7 @@ Drawn drawOn(gpu::Device& device, const std::string& name, const Shape& shape) {
     SubdivTestHost* host = hostFor(device, name);
     if (!host) return drawn;
     backend::Backend& backend = host->backend();
-    backend::SubdivDesc desc;
-    desc.mesh = &shape.mesh;
-    auto handle = backend.createSubdiv(desc);
+    auto handle = backend.createSubdiv(shape.desc());
     EXPECT_TRUE(handle) << handle.error().message;
     if (!handle) return drawn;
     const scene::Camera camera = makeCamera();
@@ -216,26 +256,28 @@ TEST_F(SubdivBackendsGpu, EmulatedImagesMatchHulldomain) {
     gpu::Device* device = GpuTestDevice::get(why);
     if (!device) GTEST_SKIP() << "no Vulkan device: " << why;
     const uint64_t messagesBefore = GpuTestDevice::validationMessages();
-    for (const char* shapeName : kShapes) {
+    for (const auto& [shapeName, displaced] : kImageCases) {
         SCOPED_TRACE(shapeName);
-        const Shape shape = loadShape(shapeName);
+        SCOPED_TRACE(displaced ? "displaced" : "base surface");
+        const Shape shape = loadShape(shapeName, displaced);
+        const std::string tag = std::string(shapeName) + (displaced ? "_displaced" : "");
         const Drawn reference = drawOn(*device, "hulldomain", shape);
         ASSERT_EQ(reference.pixels.size(), size_t(kWidth) * kHeight * 4);
-        savePng(std::string(shapeName) + "_hulldomain.png", reference.pixels);
-        savePng(std::string(shapeName) + "_hulldomain_wireframe.png", reference.wireframe);
+        savePng(tag + "_hulldomain.png", reference.pixels);
+        savePng(tag + "_hulldomain_wireframe.png", reference.wireframe);
         const double covered = coveredFraction(reference.pixels);
         EXPECT_GT(covered, 0.1) << "the surface should fill part of the image";
         for (const char* backendName : kEmulated) {
             SCOPED_TRACE(backendName);
             const Drawn drawn = drawOn(*device, backendName, shape);
             ASSERT_EQ(drawn.pixels.size(), reference.pixels.size());
-            savePng(std::string(shapeName) + "_" + backendName + ".png", drawn.pixels);
-            savePng(std::string(shapeName) + "_" + backendName + "_wireframe.png", drawn.wireframe);
+            savePng(tag + "_" + backendName + ".png", drawn.pixels);
+            savePng(tag + "_" + backendName + "_wireframe.png", drawn.wireframe);
             const double differing = differingFraction(drawn.pixels, reference.pixels, 8);
             // The wireframe shows the triangles themselves: the same pattern
             // at the same points draws the same lines.
             const double differingLines = differingFraction(drawn.wireframe, reference.wireframe, 8);
-            std::cout << "[subdiv backends] " << shapeName << " on " << backendName << ": " << covered * 100.0
+            std::cout << "[subdiv backends] " << tag << " on " << backendName << ": " << covered * 100.0
                       << " % covered, " << differing * 100.0 << " % of pixels (wireframe " << differingLines * 100.0
                       << " %) beyond 8/255 of hulldomain's\n";
             EXPECT_LT(differing, 0.005);
