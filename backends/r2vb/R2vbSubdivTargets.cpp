@@ -31,6 +31,13 @@ Result<std::unique_ptr<R2vbSubdivTargets>> R2vbSubdivTargets::create(gpu::Device
                     std::to_string(std::max(pointRows, recordRows)),
                     " rows, more than this device's maxImageDimension2D (", std::to_string(limit), ")");
 
+    // Records come in whole rows, two texels each (EmulatedDrawSource.h).
+    const uint64_t recordTexels = 2 * recordRows * R2VB_RECORD_WIDTH;
+    if (recordTexels > device.properties().limits.maxTexelBufferElements)
+        return fail("createSubdiv: r2vb's records of ", surface.name(), " need ", std::to_string(recordTexels),
+                    " texels, more than this device's maxTexelBufferElements (",
+                    std::to_string(device.properties().limits.maxTexelBufferElements), ")");
+
     std::unique_ptr<R2vbSubdivTargets> t(new R2vbSubdivTargets());
     const std::string base = "r2vb.subdiv." + surface.name();
     auto target = [&](uint32_t w, uint32_t h, VkFormat format, const std::string& name) {
