@@ -99,6 +99,8 @@ protected:
     /// Makes the subdivision table (call from initializeTechnique of a
     /// backend that draws surfaces).
     void initializeSubdiv() { mSubdivs = GpuSubdivSet(*mDevice, subdivWriteUsage()); }
+    /// The surface, or null for an unknown or destroyed handle.
+    GpuSubdiv* findSubdiv(backend::SubdivHandle handle) { return mSubdivs.find(handle); }
 
     /// Pushes the bindings every character pipeline shares (frame, character,
     /// palette, and the maps for `Draw`) plus `extra` (the cage and

@@ -3,6 +3,7 @@
 #include "FrameUniforms.h"
 #include "TerrainUniforms.h"
 #include "TessPattern.h"
+#include "tessera/subdiv/SubdivGpuMesh.h"
 #include "tessera/terrain/Terrain.h"
 #include "tessera/tessellator/PatternLibrary.h"
 
@@ -56,11 +57,20 @@ Status EmulatedTerrainBackend::initializeTechnique(const backend::BackendInitInf
     }
     mCharacterPass = EmulatedCharacterPass(*mDevice, name, static_cast<VkFormat>(info.colorFormat),
                                            static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
-    return initializeFactorPasses(info);
+    if (Status factors = initializeFactorPasses(info); !factors) return factors;
+    if (capabilities(nullptr).subdiv) {
+        mSubdivPass = EmulatedSubdivPass(*mDevice, name, static_cast<VkFormat>(info.colorFormat),
+                                         static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
+        // The backend's subdivWriteUsage is known now.
+        initializeSubdiv();
+    }
+    return {};
 }
 
 void EmulatedTerrainBackend::shutdownTechnique() {
     shutdownFactorPasses();
+    mSubdivPass = {};
+    mSubdivSource = {};
     mCharacterPass = {};
     mFillPipeline = {};
     mWirePipeline = {};
@@ -79,6 +89,37 @@ Result<backend::TerrainHandle> EmulatedTerrainBackend::createTerrain(const backe
                         " record texels, more than this device's maxTexelBufferElements (", std::to_string(limit), ")");
     }
     return BasicTerrainBackend::createTerrain(desc);
+}
+
+Result<backend::SubdivHandle> EmulatedTerrainBackend::createSubdiv(const backend::SubdivDesc& desc) {
+    if (desc.mesh) {
+        const uint64_t texels = 2ull * desc.mesh->domainCount();
+        const uint32_t limit = mDevice->properties().limits.maxTexelBufferElements;
+        if (texels > limit)
+            return fail("createSubdiv: ", desc.mesh->name, " has ", std::to_string(desc.mesh->domainCount()),
+                        " domains, whose records need ", std::to_string(texels),
+                        " texels, more than this device's maxTexelBufferElements (", std::to_string(limit), ")");
+    }
+    Result<backend::SubdivHandle> handle = BasicCharacterBackend::createSubdiv(desc);
+    if (!handle) return handle;
+    if (Status attached = attachSubdivResources(*findSubdiv(handle.value())); !attached) {
+        destroySubdiv(handle.value());
+        return attached.error();
+    }
+    return handle;
+}
+
+void EmulatedTerrainBackend::subdivPrePasses(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) {
+    recordSubdivRefine(surface);
+    mSubdivSource = recordSubdivFactorPasses(surface, uniforms);
+    if (const GpuSubdiv::Extension* extension = surface.extension())
+        mReport.intermediateBytes += extension->bytes();
+}
+
+void EmulatedTerrainBackend::subdivDraw(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) {
+    mSubdivPass.record(*mFrame, surface, mSubdivSource, mPatternVertices, mFrameUniforms, uniforms,
+                       mFrameInfo.wireframe);
+    mSubdivSource = {};
 }
 
 void EmulatedTerrainBackend::beginFrame(const backend::FrameInfo& frame) {

@@ -6,31 +6,19 @@
 /// commands per record (indirect draws of pattern pieces, TessPattern.h);
 /// this class then draws them all through the evaluation vertex shader
 /// (terrain_emulated.vert), which places each pattern point from the
-/// record's levels and displaces it from the height map.
-///
-/// Contract for the buffers a backend hands over (EmulatedDrawSource):
-///  - records: an RGBA32F texel buffer of 2 * capacity texels. Texel r holds
-///    record r's four outer levels (Vulkan quad order, clamped to the draw's
-///    range), texel capacity + r holds (inner u, inner v, float(patch index), 0).
-///  - commands: 5 * capacity VkDrawIndirectCommand (16 bytes each), in any
-///    order; command c of record r is tsEmuCommand(outer, inner, c, r) from
-///    emulated_tess.glsl (firstInstance = r * 5 + c). Unused commands must be
-///    all zero (they draw nothing).
+/// record's levels and displaces it from the height map. The buffers a
+/// backend hands over follow EmulatedDrawSource.h. Subdivision surfaces use
+/// the same contract per tessellation domain (EmulatedSubdivPass).
 
 #include "BasicCharacterBackend.h"
 #include "EmulatedCharacterPass.h"
+#include "EmulatedDrawSource.h"
+#include "EmulatedSubdivPass.h"
 #include "tessera/gpu/Buffer.h"
 
 #include <cstdint>
 
 namespace tessera::backends {
-
-struct EmulatedDrawSource {
-    VkBufferView records = VK_NULL_HANDLE;
-    uint32_t capacity = 0;
-    VkBuffer commands = VK_NULL_HANDLE;
-    VkDeviceSize commandsOffset = 0;
-};
 
 class EmulatedTerrainBackend : public BasicCharacterBackend {
 public:
@@ -38,6 +26,10 @@ public:
     /// a records texel buffer can hold on this device (2 texels per patch).
     Result<backend::TerrainHandle> createTerrain(const backend::TerrainDesc& desc) override;
     void beginFrame(const backend::FrameInfo& frame) override;
+    /// Also attaches the backend's per-surface resources
+    /// (attachSubdivResources), failing with its message, and fails when the
+    /// domains' records exceed a texel buffer (2 texels per domain).
+    Result<backend::SubdivHandle> createSubdiv(const backend::SubdivDesc& desc) override;
 
 protected:
     Status initializeTechnique(const backend::BackendInitInfo& info) final;
@@ -64,19 +56,27 @@ protected:
     virtual uint64_t characterSkinBytes() const { return 0; }
 
     /// Subdivision surfaces on the emulated tessellator. A backend that sets
-    /// BackendCapabilities::subdiv implements both, outside the main pass:
+    /// BackendCapabilities::subdiv implements these, outside the main pass:
     /// refine `surface.points()` from the frame slot's cage with its era's
     /// means (the same tsSubdivRefinePoint of subdiv_refine.glsl), leaving
     /// them ready for VERTEX_SHADER reads; then, per domain, a record and
-    /// five commands (the EmulatedDrawSource contract above; patch index =
+    /// five commands (the EmulatedDrawSource contract; patch index =
     /// domain index) from tsSubdivLevels of subdiv_levels.glsl, levels
     /// clamped to [1, TS_EMU_MAX_LEVEL], culled domains all-zero commands.
-    /// Per-surface buffers go in a GpuSubdiv::Extension.
+    /// Per-surface buffers go in a GpuSubdiv::Extension, which
+    /// attachSubdivResources makes when the surface is created (its error
+    /// refuses the surface); the extension's bytes() are counted each frame
+    /// the surface is drawn.
+    virtual Status attachSubdivResources(GpuSubdiv& /*surface*/) { return {}; }
     virtual void recordSubdivRefine(GpuSubdiv& /*surface*/) {}
     virtual EmulatedDrawSource recordSubdivFactorPasses(GpuSubdiv& /*surface*/,
                                                         const gpu::UniformSlice& /*subdivUniforms*/) {
         return {};
     }
+    /// The hooks above in order, keeping the source for subdivDraw.
+    void subdivPrePasses(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) final;
+    /// The pattern pieces of the source through EmulatedSubdivPass.
+    void subdivDraw(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) final;
 
     /// Bytes of the pattern buffers (shared by every frame).
     uint64_t patternBytes() const;
@@ -92,6 +92,8 @@ private:
     gpu::Pipeline mFillPipeline;
     gpu::Pipeline mWirePipeline;
     EmulatedCharacterPass mCharacterPass;
+    EmulatedSubdivPass mSubdivPass;
+    EmulatedDrawSource mSubdivSource; ///< the last subdivPrePasses' output
 };
 
 } // namespace tessera::backends

@@ -34,6 +34,9 @@ public:
     /// after the frames that used them have retired.
     struct Extension {
         virtual ~Extension() = default;
+        /// Device bytes of the extension's buffers and targets (the frame
+        /// report counts them beside the backend's other intermediates).
+        virtual uint64_t bytes() const { return 0; }
     };
 
     /// `writeUsage`: how the backend's refine pass writes the refined

@@ -23,6 +23,15 @@
 // The levels are those of hulldomain's compute pre-pass (terrain_metric.glsl),
 // clamped to the emulated tessellator's 14.99.
 //
+// Subdivision surfaces (drawSubdiv), render targets only as well:
+//   subdiv.refine      one point per refined point, its stencil over the
+//                      cage, into an RGBA32F target (a texel per point);
+//   subdiv.copyPoints  R2VB: the target copied into the refined points;
+//   subdiv.commands    one point per domain: levels (tsSubdivLevels, clamped
+//                      to 14.99), record and commands into seven targets;
+//   subdiv.copyRecords R2VB: into the record texel buffer and indirect buffer;
+// then EmulatedSubdivPass draws the pattern pieces through subdiv_emulated.vert.
+//
 // Instanced crowds (drawCrowd) are culled and binned the same way, with
 // render targets only: R2vbCrowdBinningPass (the LOD state per id, a
 // histogram pyramid over the creature-sorted instances, the lists' counts
@@ -41,6 +50,9 @@
 #include "R2vbCrowdNearPass.h"
 #include "R2vbCrowdTargets.h"
 #include "R2vbFactorPass.h"
+#include "R2vbSubdivCommandPass.h"
+#include "R2vbSubdivRefinePass.h"
+#include "R2vbSubdivTargets.h"
 #include "R2vbTargets.h"
 #include "tessera/backend/PluginApi.h"
 
@@ -66,6 +78,7 @@ public:
         caps.maxTessFactor = 14.99f;
         caps.terrainModes = 0b111;
         caps.crowd = true;
+        caps.subdiv = true;
         checkRequirements(device, caps);
         return caps;
     }
@@ -84,6 +97,8 @@ protected:
         mFactorPass = R2vbFactorPass(*mDevice);
         mCommandPass = R2vbCommandPass(*mDevice);
         mCharacterSkin = R2vbCharacterSkinPass(*mDevice);
+        mSubdivRefine = R2vbSubdivRefinePass(*mDevice);
+        mSubdivCommands = R2vbSubdivCommandPass(*mDevice);
         mCrowds = GpuCrowdSet(*mDevice);
         mCrowdBinning = R2vbCrowdBinningPass(*mDevice);
         mCrowdNear = R2vbCrowdNearPass(*mDevice);
@@ -103,6 +118,8 @@ protected:
         mCrowdNear = {};
         mCrowdBinning = {};
         for (auto& targets : mTargets) targets = {};
+        mSubdivCommands = {};
+        mSubdivRefine = {};
         mCharacterSkin = {};
         mCommandPass = {};
         mFactorPass = {};
@@ -142,6 +159,25 @@ protected:
 
     void skinCharacter(const CharacterInstance& instance) override {
         mCharacterSkin.record(*mFrame, instance, characterPush());
+    }
+
+    // Subdivision surfaces: the refined points are the destination of the
+    // points target's copy; records and commands come from render targets.
+    VkBufferUsageFlags subdivWriteUsage() const override { return VK_BUFFER_USAGE_TRANSFER_DST_BIT; }
+
+    Status attachSubdivResources(GpuSubdiv& surface) override {
+        auto targets = R2vbSubdivTargets::create(*mDevice, surface);
+        if (!targets) return targets.error();
+        surface.attach(std::move(targets.value()));
+        return {};
+    }
+
+    void recordSubdivRefine(GpuSubdiv& surface) override {
+        mSubdivRefine.record(*mFrame, surface, subdivTargets(surface));
+    }
+
+    EmulatedDrawSource recordSubdivFactorPasses(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) override {
+        return mSubdivCommands.record(*mFrame, surface, subdivTargets(surface), uniforms, emuKeyTable());
     }
 
 public:
@@ -209,6 +245,11 @@ public:
     }
 
 private:
+    /// A surface's targets (attached at createSubdiv).
+    static R2vbSubdivTargets& subdivTargets(GpuSubdiv& surface) {
+        return *static_cast<R2vbSubdivTargets*>(surface.extension());
+    }
+
     /// The slot's targets, made (once per terrain size) large enough for every
     /// patch of a terrain of `patchCount` patches.
     R2vbTargets& targetsFor(uint32_t slot, uint32_t patchCount) {
@@ -225,6 +266,8 @@ private:
     R2vbFactorPass mFactorPass;
     R2vbCommandPass mCommandPass;
     R2vbCharacterSkinPass mCharacterSkin;
+    R2vbSubdivRefinePass mSubdivRefine;
+    R2vbSubdivCommandPass mSubdivCommands;
     std::array<R2vbTargets, gpu::kFramesInFlight> mTargets;
     GpuCrowdSet mCrowds;
     /// Per crowd handle id (null once destroyed): its binning targets.

@@ -6,6 +6,12 @@
 //   streamout.cull     a geometry shader drops patches outside the frustum, streams out the rest
 //   streamout.factors  draw-auto over the survivors: levels and tessellator commands, streamed out
 // then EmulatedTerrainBackend draws the pattern pieces with one indirect draw.
+// Subdivision surfaces (drawSubdiv) with the same means:
+//   subdiv.refine      one point per refined point, its stencil over the cage,
+//                      captured by transform feedback into the refined points
+//   subdiv.factors     one point per domain: levels (tsSubdivLevels, clamped
+//                      to 14.99), record and commands, streamed out
+// then EmulatedSubdivPass draws the pattern pieces through subdiv_emulated.vert.
 // Instanced crowds are culled and binned with the same means (the Froblins'
 // D3D10 technique): a geometry shader culls the instances as points and
 // streams the survivors out while rasterising their LOD state into a render
@@ -22,6 +28,9 @@
 #include "StreamoutCullPass.h"
 #include "StreamoutFactorPass.h"
 #include "StreamoutRecording.h"
+#include "StreamoutSubdivBuffers.h"
+#include "StreamoutSubdivFactorPass.h"
+#include "StreamoutSubdivRefinePass.h"
 #include "tessera/backend/PluginApi.h"
 
 #include <memory>
@@ -41,6 +50,7 @@ public:
         caps.maxTessFactor = 14.99f;
         caps.terrainModes = 0b111;
         caps.crowd = true;
+        caps.subdiv = true;
         checkRequirements(device, caps);
         return caps;
     }
@@ -53,6 +63,8 @@ protected:
         mCullPass = StreamoutCullPass(*mDevice);
         mFactorPass = StreamoutFactorPass(*mDevice);
         mCharacterSkin = StreamoutCharacterSkinPass(*mDevice);
+        mSubdivRefine = StreamoutSubdivRefinePass(*mDevice);
+        mSubdivFactors = StreamoutSubdivFactorPass(*mDevice);
         mCrowds = std::make_unique<StreamoutCrowdRenderer>(*mDevice, static_cast<VkFormat>(info.colorFormat),
                                                            static_cast<VkFormat>(info.depthFormat));
         return {};
@@ -60,6 +72,8 @@ protected:
 
     void shutdownFactorPasses() override {
         mCrowds.reset();
+        mSubdivFactors = {};
+        mSubdivRefine = {};
         mCharacterSkin = {};
         mFactorPass = {};
         mCullPass = {};
@@ -104,6 +118,21 @@ protected:
         mCharacterSkin.record(*mFrame, instance, characterPush());
     }
 
+    // Subdivision surfaces: the refined points are captured by transform
+    // feedback, then a second stream-out pass writes records and commands.
+    VkBufferUsageFlags subdivWriteUsage() const override { return VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT; }
+
+    Status attachSubdivResources(GpuSubdiv& surface) override {
+        surface.attach(std::make_unique<StreamoutSubdivBuffers>(*mDevice, surface));
+        return {};
+    }
+
+    void recordSubdivRefine(GpuSubdiv& surface) override { mSubdivRefine.record(*mFrame, surface); }
+
+    EmulatedDrawSource recordSubdivFactorPasses(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) override {
+        return mSubdivFactors.record(*mFrame, surface, uniforms, emuKeyTable());
+    }
+
 public:
     Result<backend::CrowdHandle> createCrowd(const backend::CrowdDesc& desc) override {
         if (!mCrowds) return Error{"createCrowd before initialize"};
@@ -143,6 +172,8 @@ private:
     StreamoutCullPass mCullPass;
     StreamoutFactorPass mFactorPass;
     StreamoutCharacterSkinPass mCharacterSkin;
+    StreamoutSubdivRefinePass mSubdivRefine;
+    StreamoutSubdivFactorPass mSubdivFactors;
 };
 
 backend::Backend* create() { return new StreamoutBackend(); }

@@ -90,7 +90,7 @@ TEST_P(CrowdLodBinning, GpuBinningEqualsTheCpuReference) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryBackend, CrowdLodBinning, ::testing::Values("hulldomain", "streamout", "r2vb", "null"),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& test) { return test.param; });
 
 // --crowd-tiers needs the crowd scene: elsewhere it is one clear error.
 TEST(CrowdLod, TiersWithoutACrowdFailClearly) {

@@ -204,7 +204,9 @@ TEST(SubdivGpuMesh, ExtraordinaryPatchCornersAreMarked) {
     for (const shader::SubdivPatch& patch : b.mesh.patches) {
         const uint32_t type = patch.data.x & 0xffu;
         const uint32_t corners = patch.data.x >> TS_SUBDIV_PATCH_EV_SHIFT;
-        if (type == TS_SUBDIV_PATCH_GREGORY_BASIS) EXPECT_NE(corners, 0u);
+        if (type == TS_SUBDIV_PATCH_GREGORY_BASIS) {
+            EXPECT_NE(corners, 0u);
+        }
         EXPECT_LE(std::popcount(corners), 1);
     }
 }
