@@ -136,7 +136,7 @@ TEST(SubdivCrackHardware, DisplacedSurfaceHasNoCracksUpTo64) {
     EXPECT_EQ(sweepAll("hulldomain", {"14.99:64", "0.03", 3}), 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryBackend, SubdivCrack, ::testing::Values("hulldomain"),
+INSTANTIATE_TEST_SUITE_P(EveryBackend, SubdivCrack, ::testing::Values("hulldomain", "streamout", "r2vb"),
                          [](const auto& test) { return test.param; });
 
 // The stroke shows: the last frame of a sculpted run differs from the same

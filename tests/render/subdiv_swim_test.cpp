@@ -97,5 +97,5 @@ TEST_P(SubdivSwimming, MipSelectionSwimsLessThanTheFinestLevel) {
     EXPECT_LT(mips, fine) << "mip selection should swim less than sampling the finest level";
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryBackend, SubdivSwimming, ::testing::Values("hulldomain"),
+INSTANTIATE_TEST_SUITE_P(EveryBackend, SubdivSwimming, ::testing::Values("hulldomain", "streamout", "r2vb"),
                          [](const auto& test) { return test.param; });
