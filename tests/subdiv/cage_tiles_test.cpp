@@ -10,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -119,7 +121,9 @@ TEST(CageTiles, EveryTruncationIsAnErrorNamingTheFile) {
         Result<CageTiles> r = decodeCageTiles(std::span(bytes).first(n), "cut.cctiles");
         ASSERT_FALSE(r.ok()) << n;
         EXPECT_EQ(r.error().message.rfind("cut.cctiles: ", 0), 0u) << r.error().message;
-        if (n > 0) EXPECT_NE(r.error().message.find("truncated"), std::string::npos) << n << ": " << r.error().message;
+        if (n > 0) {
+            EXPECT_NE(r.error().message.find("truncated"), std::string::npos) << n << ": " << r.error().message;
+        }
     }
 }
 
