@@ -4,6 +4,8 @@
 #include "FrameUniforms.h"
 #include "tessera/gpu/Barriers.h"
 
+#include <algorithm>
+
 #include "subdiv.frag.spv.h"
 #include "subdiv_patch.tesc.spv.h"
 #include "subdiv_patch.tese.spv.h"
@@ -13,6 +15,8 @@
 namespace tessera::backends {
 
 namespace {
+constexpr uint32_t kMaxTessellatedVertices = 65536;
+constexpr uint32_t kVerticesPerDomainAt64 = 65 * 65; // a quad domain at level 64
 constexpr VkPipelineStageFlags2 kDrawReads = VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT |
                                              VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT |
                                              VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
@@ -100,7 +104,13 @@ void HulldomainSubdivPass::recordDraw(gpu::FrameContext& frame, GpuSubdiv& surfa
     writes.push_back(texelWrite(TS_BINDING_SUBDIV_SUPPORT, &support));
     mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0,
                                        uint32_t(writes.size()), writes.data());
-    vkCmdDraw(cmd, surface.domainCount(), 1, 0, 0);
+    // At most 65,536 tessellated vertices per draw: lavapipe indexes a
+    // draw's tessellated vertices with 16 bits and joins far-apart domains'
+    // points beyond that (stray triangles across the surface from level 32 on
+    // a mesh of 60 domains). The batches cost a GPU nothing measurable.
+    const uint32_t perDraw = kMaxTessellatedVertices / kVerticesPerDomainAt64;
+    for (uint32_t first = 0; first < surface.domainCount(); first += perDraw)
+        vkCmdDraw(cmd, std::min(perDraw, surface.domainCount() - first), 1, first, 0);
 }
 
 } // namespace tessera::backends

