@@ -237,6 +237,13 @@ Subdivision surfaces (--model FILE.obj; the second paper, docs/SUBDIV.md):
                         overlaps are rederived and re-uploaded
   --subdiv-still        keep the control cages in their rest pose (they
                         sway by default)
+  --character-surface S planar (default) | catmull-clark | both: draw each
+                        --model .glb as the first paper's planar cage, as
+                        a Catmull-Clark surface with the tile displacement
+                        baked beside it (FILE.cctiles, made by
+                        tessera-creaturegen for the generated Froblins), or
+                        both side by side; the Catmull-Clark ones need a
+                        backend that draws subdivision surfaces (hulldomain)
 
 Output:
   --width N --height N  render size (default 1280x720)
@@ -347,6 +354,12 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
         else if (flag == "--model") {
             TESSERA_TAKE(v);
             (isObjFile(v) ? o.surfaces : o.models).push_back(v);
+        }
+        else if (flag == "--character-surface") {
+            TESSERA_TAKE(v);
+            if (v != "planar" && v != "catmull-clark" && v != "both")
+                return fail("--character-surface expects planar, catmull-clark or both, got \"", v, "\"");
+            o.characterSurface = v;
         }
         else if (flag == "--normals") {
             TESSERA_TAKE(v);
@@ -603,6 +616,10 @@ Result<DemoOptions> parseDemoOptions(const std::vector<std::string>& args) {
     if (!o.surfaces.empty() && o.scene != "characters")
         return fail("--model ", o.surfaces.front(), ": a .obj surface stands in the characters scene; drop --scene ",
                     o.scene);
+    if (o.characterSurface != "planar" && (o.models.empty() || o.scene != "characters"))
+        return fail("--character-surface ", o.characterSurface,
+                    " draws the --model .glb files of the characters scene as Catmull-Clark surfaces; give "
+                    "--model FILE.glb (with FILE.cctiles beside it)");
     if (o.bench == "terrain" && o.scene != "terrain")
         return fail("--bench terrain measures the terrain; drop --scene ", o.scene);
     if (!o.tessTargetGiven) o.tessellation.targetPixels = terrain::defaultTargetPixels(o.tessellation.metric);

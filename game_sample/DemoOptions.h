@@ -92,6 +92,10 @@ struct DemoOptions {
     std::vector<std::string> models;    ///< --model FILE (repeatable): any .gltf or .glb
     std::vector<std::string> surfaces;  ///< --model FILE.obj (repeatable): Catmull-Clark control meshes
     SubdivOptions subdiv;
+    /// --character-surface planar|catmull-clark|both: the --model .glb
+    /// characters as planar cages, as Catmull-Clark surfaces with their
+    /// .cctiles displacement (SubdivCharacters), or both side by side.
+    std::string characterSurface = "planar";
     uint32_t crowd = 6;                 ///< --crowd N: generated creatures (0: only the --model files, no CesiumMan)
     /// --orbit-distance M: the camera circle's radius; unset: 5 m in the
     /// characters scene, 30 m in the crowd scene.

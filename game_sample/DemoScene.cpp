@@ -49,8 +49,18 @@ Result<std::unique_ptr<DemoScene>> DemoScene::load(const DemoOptions& options, u
     scene->mPath.emplace(pathSettings, [&ground](float x, float z) { return ground.heightAt(x, z); });
     scene->mFixedPose = options.camera;
     if (options.scene == "characters") {
-        auto crowd = CharacterCrowd::load(options, ground);
+        // --character-surface catmull-clark: the --model characters stand
+        // only as Catmull-Clark surfaces, so the crowd leaves them out.
+        DemoOptions crowdOptions = options;
+        if (options.characterSurface == "catmull-clark") crowdOptions.models.clear();
+        auto crowd = CharacterCrowd::load(crowdOptions, ground);
         if (!crowd) return crowd.error();
+        if (options.characterSurface != "planar") {
+            auto characters = SubdivCharacters::load(options, ground, crowd.value()->site());
+            if (!characters) return characters.error();
+            scene->mSubdivCharacters = std::move(characters.value());
+            crowd.value()->frameAlso(scene->mSubdivCharacters->bounds());
+        }
         if (!options.surfaces.empty()) {
             // The surfaces stand at the middle of the creatures' circles.
             const glm::vec3 site = crowd.value()->site();

@@ -7,6 +7,7 @@
 #include "CharacterPopulation.h"
 #include "DemoOptions.h"
 #include "SimulatedCrowd.h"
+#include "SubdivCharacters.h"
 #include "SubdivModels.h"
 #include "tessera/core/Result.h"
 #include "tessera/scene/CameraPath.h"
@@ -42,6 +43,9 @@ public:
     /// The characters scene's Catmull-Clark surfaces (--model FILE.obj);
     /// null when there are none.
     SubdivModels* surfaces() { return mSurfaces.get(); }
+    /// The --model characters as Catmull-Clark surfaces
+    /// (--character-surface catmull-clark or both); null otherwise.
+    SubdivCharacters* subdivCharacters() { return mSubdivCharacters.get(); }
     /// The simulated crowd of the crowd scene (the same object as
     /// characters()); null in the other scenes.
     SimulatedCrowd* simulatedCrowd() { return mSimulated; }
@@ -64,6 +68,7 @@ private:
     std::unique_ptr<CharacterPopulation> mCharacters;
     SimulatedCrowd* mSimulated = nullptr;
     std::unique_ptr<SubdivModels> mSurfaces;
+    std::unique_ptr<SubdivCharacters> mSubdivCharacters;
     std::optional<scene::CameraPath> mPath;
     std::optional<scene::CameraPose> mFixedPose;
     std::vector<terrain::MeteorImpact> mImpacts;

@@ -129,7 +129,7 @@ Status RenderSession::createCrowd(const backend::CrowdDesc& desc) {
     return {};
 }
 
-Status RenderSession::createSubdivs(SubdivModels& models) {
+Status RenderSession::createSubdivs(SubdivSource& models) {
     TESSERA_CPU_SCOPE("load.subdivUpload");
     for (size_t i = 0; i < models.size(); ++i) {
         auto handle = mSelected->backend->createSubdiv(models.desc(i));

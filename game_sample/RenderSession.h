@@ -49,10 +49,10 @@ public:
     /// session); renderFrame draws it when given its frame. An error naming
     /// the backend when it cannot.
     Status createCrowd(const backend::CrowdDesc& desc);
-    /// Uploads every surface of `models` and binds the handles (destroyed
-    /// with the session). An error naming the backend and the surface when
-    /// the backend cannot draw it.
-    Status createSubdivs(SubdivModels& models);
+    /// Uploads every surface of `models` (the .obj shapes, the Catmull-Clark
+    /// characters) and binds the handles (destroyed with the session). An
+    /// error naming the backend and the surface when the backend cannot draw it.
+    Status createSubdivs(SubdivSource& models);
     /// The refined points of surface `handle` as the backend's last frame
     /// used them (blocking).
     Result<backend::SubdivPoints> readSubdivPoints(backend::SubdivHandle handle);

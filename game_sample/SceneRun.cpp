@@ -65,6 +65,13 @@ Result<std::unique_ptr<SceneRun>> SceneRun::create(const DemoOptions& options, u
                         formatNumber(session.capabilities().maxTessFactor));
         if (Status ok = session.createSubdivs(*surfaces); !ok) return ok.error();
     }
+    if (SubdivCharacters* subdivCharacters = run->mScene->subdivCharacters()) {
+        if (!session.capabilities().subdiv)
+            return fail("--character-surface ", options.characterSurface, ": backend ", session.capabilities().name,
+                        " does not draw Catmull-Clark surfaces (BackendCapabilities::subdiv); use --backend "
+                        "hulldomain, or --character-surface planar");
+        if (Status ok = session.createSubdivs(*subdivCharacters); !ok) return ok.error();
+    }
     if (const SimulatedCrowd* simulated = run->mScene->simulatedCrowd())
         std::printf("%s\n",
                     simulated->drawingMode(session.capabilities().name, session.capabilities().requiresGpu).c_str());
@@ -89,12 +96,19 @@ void SceneRun::renderFrame(uint32_t frame, bool readback) {
         if (mInstanced) crowdDraw = mInstanced->drawInfo(mOptions.displacement, mOptions.lodColors);
     }
     std::span<const SubdivDraw> surfaceDraws;
+    const uint64_t budget = mOptions.subdiv.budget.value_or(
+        session.deviceClass() == lod::DeviceClass::Cpu ? kSubdivBudgetCpu : kSubdivBudgetGpu);
     if (SubdivModels* surfaces = mScene->surfaces()) {
-        const uint64_t budget = mOptions.subdiv.budget.value_or(
-            session.deviceClass() == lod::DeviceClass::Cpu ? kSubdivBudgetCpu : kSubdivBudgetGpu);
         surfaces->update(frame * DemoScene::kSecondsPerFrame, mCamera, session.height(),
                          session.capabilities().maxTessFactor, budget);
         surfaceDraws = surfaces->draws();
+    }
+    if (SubdivCharacters* subdivCharacters = mScene->subdivCharacters()) {
+        subdivCharacters->update(frame * DemoScene::kSecondsPerFrame, mCamera, session.height(),
+                                 session.capabilities().maxTessFactor, budget);
+        mSubdivDraws.assign(surfaceDraws.begin(), surfaceDraws.end());
+        mSubdivDraws.insert(mSubdivDraws.end(), subdivCharacters->draws().begin(), subdivCharacters->draws().end());
+        surfaceDraws = mSubdivDraws;
     }
     session.renderFrame(frame, mCamera, mSettings, mOptions.clearColor, mOptions.wireframe, readback,
                         characters ? &draw : nullptr, mInstanced ? &crowdDraw : nullptr, surfaceDraws);

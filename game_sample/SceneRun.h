@@ -15,6 +15,7 @@
 #include "tessera/scene/Camera.h"
 
 #include <memory>
+#include <vector>
 
 namespace tessera::demo {
 
@@ -48,6 +49,7 @@ private:
     lod::LodPolicy mLodPolicy;
     InstancedCrowd* mInstanced = nullptr;
     scene::Camera mCamera;
+    std::vector<SubdivDraw> mSubdivDraws; ///< the .obj shapes' and the Catmull-Clark characters' draws
 };
 
 } // namespace tessera::demo

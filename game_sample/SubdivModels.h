@@ -8,6 +8,7 @@
 /// frame's triangle budget and the backend's level cap.
 
 #include "DemoOptions.h"
+#include "SubdivSource.h"
 #include "tessera/backend/SubdivDesc.h"
 #include "tessera/core/Result.h"
 #include "tessera/scene/Aabb.h"
@@ -38,7 +39,7 @@ struct SubdivDraw {
     std::vector<glm::uvec4> tileRects;
 };
 
-class SubdivModels {
+class SubdivModels final : public SubdivSource {
 public:
     /// Reads and builds every file; stands them in a row centred on `site`
     /// (x, z; the terrain's height below). Errors name the file.
@@ -47,11 +48,11 @@ public:
 
     /// The row's world box (for framing the camera).
     const scene::Aabb& bounds() const { return mBounds; }
-    size_t size() const { return mSurfaces.size(); }
+    size_t size() const override { return mSurfaces.size(); }
 
     /// What createSubdiv needs for surface `i` (valid while this lives).
-    backend::SubdivDesc desc(size_t i) const;
-    void setHandle(size_t i, backend::SubdivHandle handle) { mSurfaces[i].handle = handle; }
+    backend::SubdivDesc desc(size_t i) const override;
+    void setHandle(size_t i, backend::SubdivHandle handle) override { mSurfaces[i].handle = handle; }
 
     /// Animates the cages to `seconds` and plans each surface's level of
     /// detail for `camera` on a `viewportHeight`-pixel target, with the

@@ -1,0 +1,183 @@
+#include "SubdivCharacters.h"
+
+#include "CameraOrbit.h"
+#include "tessera/assets/GltfLoader.h"
+#include "tessera/character/AnimatedBounds.h"
+#include "tessera/character/SkinnedVertex.h"
+#include "tessera/profiler/CpuScope.h"
+#include "tessera/subdiv/CageTiles.h"
+#include "tessera/subdiv/PtexTopology.h"
+#include "tessera/subdiv/SubdivLod.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace tessera::demo {
+
+std::string SubdivCharacters::tilesFileFor(const std::string& glb) {
+    return std::filesystem::path(glb).replace_extension(".cctiles").string();
+}
+
+Result<SubdivCharacters::Character> SubdivCharacters::build(const std::string& file) {
+    TESSERA_CPU_SCOPE("load.subdivCharacter");
+    Character c;
+    c.file = file;
+    Result<character::CharacterAsset> asset = assets::loadCharacter(file);
+    if (!asset) return asset.error();
+    c.asset = std::move(asset).value();
+    std::vector<glm::vec3> positions(c.asset.cage.vertices.size());
+    for (size_t v = 0; v < positions.size(); ++v) positions[v] = c.asset.cage.vertices[v].position;
+    Result<subdiv::WeldedCage> cage = subdiv::weldTriangleCage(positions, c.asset.cage.indices, file);
+    if (!cage) return cage.error();
+    c.cage = std::move(cage).value();
+
+    const std::string tilesFile = tilesFileFor(file);
+    Result<subdiv::CageTiles> stored = subdiv::readCageTiles(tilesFile);
+    if (!stored) return stored.error();
+    Result<subdiv::PtexTopology> topology = subdiv::PtexTopology::create(c.cage.shape);
+    if (!topology) return topology.error();
+    if (Status ok = subdiv::checkCageTiles(*stored, c.cage, uint32_t(positions.size()), topology->tileCount(),
+                                           tilesFile);
+        !ok)
+        return ok.error();
+    Result<subdiv::DisplacementTiles> tiles =
+        subdiv::DisplacementTiles::create(std::move(topology).value(), stored->log2Sizes);
+    if (!tiles) return fail(tilesFile, ": ", tiles.error().message);
+    tiles->assign(stored->coefficients());
+    c.tiles = std::move(tiles).value();
+    for (const shader::TileRecord& r : c.tiles->tileRecords()) c.records.push_back(r.data);
+    for (float t : c.tiles->texels()) c.maxDisplacement = std::max(c.maxDisplacement, std::abs(t));
+
+    Result<subdiv::SubdivSurface> surface = subdiv::SubdivSurface::create(c.cage.shape);
+    if (!surface) return surface.error();
+    c.surface = std::make_unique<subdiv::SubdivSurface>(std::move(surface).value());
+    Result<subdiv::SubdivGpuMesh> mesh = subdiv::SubdivGpuMesh::build(c.cage.shape, *c.surface);
+    if (!mesh) return mesh.error();
+    c.mesh = std::move(mesh).value();
+
+    // The box over every clip, as the planar character's, grown by the
+    // largest displacement (the limit surface lies inside the cage's hull).
+    c.box = character::animatedBounds(c.asset);
+    c.box.min -= glm::vec3(c.maxDisplacement);
+    c.box.max += glm::vec3(c.maxDisplacement);
+    c.clip = c.asset.clips.empty() ? -1 : 0; // what CharacterCrowd plays for a --model
+    c.skinned.resize(c.cage.shape.positions.size());
+    c.cageFrame.resize(c.skinned.size());
+    return c;
+}
+
+Result<std::unique_ptr<SubdivCharacters>> SubdivCharacters::load(const DemoOptions& options,
+                                                                 const terrain::Terrain& terrain, glm::vec3 site) {
+    std::unique_ptr<SubdivCharacters> characters(new SubdivCharacters());
+    characters->mOptions = options.subdiv;
+    for (const std::string& file : options.models) {
+        Result<Character> built = build(file);
+        if (!built) return built.error();
+        characters->mCharacters.push_back(std::move(built).value());
+    }
+    // Where CharacterCrowd::populate stands the planar --model characters:
+    // a row spaced by the largest one, centred on the site when they are
+    // alone, else beside the crowd; facing where the camera starts.
+    const size_t n = characters->mCharacters.size();
+    float largest = 0.0f;
+    for (const Character& c : characters->mCharacters) {
+        const scene::Aabb box = character::animatedBounds(c.asset);
+        largest = std::max(largest, glm::length(glm::vec2(box.extents().x, box.extents().z)));
+    }
+    const float spacing = std::max(1.5f, 2.2f * largest);
+    const bool alone = options.crowd == 0;
+    // `both`: to the planar one's right as the camera starts its orbit
+    // (the camera sits at azimuth kStart, so its right is (cos, -sin)).
+    const glm::vec2 beside = options.characterSurface == "both"
+                                 ? 0.8f * spacing * glm::vec2(std::cos(CameraOrbit::kStart), -std::sin(CameraOrbit::kStart))
+                                 : glm::vec2(0.0f);
+    const glm::vec2 centre(site.x, site.z);
+    characters->mBounds = scene::Aabb::empty();
+    for (size_t k = 0; k < n; ++k) {
+        Character& c = characters->mCharacters[k];
+        // Made here, not in build(): a Pose points at its skeleton, which
+        // must not move any more (the vector is complete).
+        c.pose = std::make_unique<character::Pose>(c.asset.skeleton);
+        const glm::vec2 at = beside + centre +
+                             (alone ? glm::vec2(spacing * (float(k) - 0.5f * float(n - 1)), 0.0f)
+                                    : glm::vec2(-spacing * float(k + 1), 0.8f));
+        c.model = glm::translate(glm::mat4(1.0f), glm::vec3(at.x, terrain.heightAt(at.x, at.y), at.y));
+        c.model = glm::rotate(c.model, CameraOrbit::kStart, glm::vec3(0, 1, 0));
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 p((corner & 1) ? c.box.max.x : c.box.min.x, (corner & 2) ? c.box.max.y : c.box.min.y,
+                              (corner & 4) ? c.box.max.z : c.box.min.z);
+            characters->mBounds.expand(glm::vec3(c.model * glm::vec4(p, 1.0f)));
+        }
+    }
+    return characters;
+}
+
+backend::SubdivDesc SubdivCharacters::desc(size_t i) const {
+    const Character& c = mCharacters[i];
+    backend::SubdivDesc desc;
+    desc.mesh = &c.mesh;
+    desc.tiles.texels = c.tiles->texels();
+    desc.tiles.width = c.tiles->textureWidth();
+    desc.tiles.height = c.tiles->textureHeight();
+    desc.tiles.records = c.records;
+    return desc;
+}
+
+void SubdivCharacters::skin(Character& c, double seconds) const {
+    // The planar character's first pass on the CPU: the clip sampled, the
+    // palette, then linear blend skinning of one cage vertex per control
+    // vertex (welded copies share position and weights).
+    c.pose->reset();
+    if (c.clip >= 0) c.pose->apply(c.asset.clips[size_t(c.clip)], float(seconds));
+    c.pose->computeGlobals();
+    c.pose->palette(c.asset.cage, c.palette);
+    for (size_t v = 0; v < c.skinned.size(); ++v) {
+        c.skinned[v] = character::skinVertex(c.asset.cage.vertices[c.cage.firstCageVertex[v]], c.palette).position;
+        c.cageFrame[v] = glm::vec4(c.skinned[v], 1.0f);
+    }
+}
+
+void SubdivCharacters::update(double seconds, const scene::Camera& camera, uint32_t viewportHeight, float levelCap,
+                              uint64_t budget) {
+    TESSERA_CPU_SCOPE("subdiv.characters");
+    subdiv::SubdivView view;
+    view.frustum = camera.frustum();
+    view.eye = camera.position();
+    view.pixelsPerMetre = float(viewportHeight) * std::abs(camera.projection()[1][1]) * 0.5f;
+    subdiv::SubdivLodSettings settings;
+    settings.targetPixels = mOptions.pixels.value_or(settings.targetPixels);
+    settings.levelCap = levelCap;
+    settings.fixedLevel = mOptions.level ? std::min(*mOptions.level, levelCap) : 0.0f;
+    settings.mipSelection = mOptions.mips;
+    settings.normals = mOptions.normals;
+    settings.view = mOptions.view;
+    settings.displacementScale = 1.0f;
+
+    auto plan = [&](const Character& c, uint64_t share) {
+        settings.maxDisplacement = c.maxDisplacement;
+        settings.triangleBudget = share;
+        return subdiv::SubdivLod::plan(c.mesh, c.skinned, c.model, view, settings);
+    };
+    std::vector<subdiv::SubdivLodFrame> frames;
+    uint64_t wanted = 0;
+    for (Character& c : mCharacters) {
+        skin(c, seconds);
+        frames.push_back(plan(c, budget));
+        wanted += frames.back().prediction.triangles;
+    }
+    // Over budget, each character's share follows what it would take alone.
+    if (budget > 0 && wanted > budget && mCharacters.size() > 1)
+        for (size_t i = 0; i < mCharacters.size(); ++i)
+            frames[i] = plan(mCharacters[i], std::max<uint64_t>(1, budget * frames[i].prediction.triangles / wanted));
+    mDraws.clear();
+    mPredicted = 0;
+    for (size_t i = 0; i < mCharacters.size(); ++i) {
+        mDraws.push_back({mCharacters[i].handle, {frames[i].uniforms, mCharacters[i].cageFrame}});
+        mPredicted += frames[i].prediction.triangles;
+    }
+}
+
+} // namespace tessera::demo
