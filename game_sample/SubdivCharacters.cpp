@@ -61,6 +61,23 @@ Result<SubdivCharacters::Character> SubdivCharacters::build(const std::string& f
     // The box over every clip, as the planar character's, grown by the
     // largest displacement (the limit surface lies inside the cage's hull).
     c.box = character::animatedBounds(c.asset);
+    // One colour for the whole surface (it has no texture coordinates of
+    // its own): the mean of the base colour texture, as the character
+    // shader reads its texels (no sRGB decode in either), so
+    // the two versions read as the same creature side by side.
+    if (c.asset.baseColor && !c.asset.baseColor->empty() && c.asset.baseColor->bytesPerTexel() == 4) {
+        // Texels outside the atlas's charts (black, or transparent) are not
+        // the creature's colour.
+        glm::dvec3 sum(0.0);
+        size_t count = 0;
+        const std::vector<uint8_t>& bytes = c.asset.baseColor->bytes;
+        for (size_t i = 0; i + 3 < bytes.size(); i += 4) {
+            if (bytes[i + 3] == 0 || bytes[i] + bytes[i + 1] + bytes[i + 2] < 8) continue;
+            for (int k = 0; k < 3; ++k) sum[k] += bytes[i + k] / 255.0;
+            ++count;
+        }
+        if (count > 0) c.albedo = glm::vec3(sum / double(count));
+    }
     c.box.min -= glm::vec3(c.maxDisplacement);
     c.box.max += glm::vec3(c.maxDisplacement);
     c.clip = c.asset.clips.empty() ? -1 : 0; // what CharacterCrowd plays for a --model
@@ -158,6 +175,7 @@ void SubdivCharacters::update(double seconds, const scene::Camera& camera, uint3
 
     auto plan = [&](const Character& c, uint64_t share) {
         settings.maxDisplacement = c.maxDisplacement;
+        settings.albedo = c.albedo;
         settings.triangleBudget = share;
         return subdiv::SubdivLod::plan(c.mesh, c.skinned, c.model, view, settings);
     };

@@ -69,6 +69,7 @@ private:
         std::optional<subdiv::DisplacementTiles> tiles;
         std::vector<glm::uvec4> records;
         float maxDisplacement = 0.0f;
+        glm::vec3 albedo{0.72f, 0.66f, 0.58f}; ///< the base colour texture's mean, if any
         int clip = -1;
         glm::mat4 model{1.0f};
         scene::Aabb box; ///< object space, over the clips, grown by the displacement
