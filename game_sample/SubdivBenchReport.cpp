@@ -8,6 +8,12 @@ namespace {
 
 /// The base surface's row of the same backend and level, for the ratios.
 const SubdivBenchRow* baseOf(const SubdivBenchSummary& summary, const SubdivBenchRow& row) {
+    // The creature's rows compare with its Catmull-Clark row.
+    if (row.variant.rfind("creature", 0) == 0) {
+        for (const SubdivBenchRow& r : summary.rows)
+            if (r.backend == row.backend && r.variant == "creature-cc") return &r;
+        return nullptr;
+    }
     for (const SubdivBenchRow& r : summary.rows)
         if (r.backend == row.backend && r.variant == "base" && (r.level == row.level || row.level == 0.0))
             return &r;

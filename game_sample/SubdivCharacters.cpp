@@ -198,4 +198,16 @@ void SubdivCharacters::update(double seconds, const scene::Camera& camera, uint3
     }
 }
 
+uint64_t SubdivCharacters::cageTriangles() const {
+    uint64_t triangles = 0;
+    for (const Character& c : mCharacters) triangles += c.asset.cage.indices.size() / 3;
+    return triangles;
+}
+
+uint32_t SubdivCharacters::domainCount() const {
+    uint32_t domains = 0;
+    for (const Character& c : mCharacters) domains += c.mesh.domainCount();
+    return domains;
+}
+
 } // namespace tessera::demo

@@ -58,6 +58,10 @@ public:
                 uint64_t budget);
     std::span<const SubdivDraw> draws() const { return mDraws; }
     uint64_t predictedTriangles() const { return mPredicted; }
+    /// Domains of every character's surface.
+    uint32_t domainCount() const;
+    /// Triangles of every character's planar cage (the first paper's).
+    uint64_t cageTriangles() const;
 
 private:
     struct Character {
