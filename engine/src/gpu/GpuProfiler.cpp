@@ -2,6 +2,7 @@
 
 #include "tessera/gpu/Device.h"
 #include "tessera/gpu/VulkanCheck.h"
+#include "tessera/core/Log.h"
 #include "tessera/profiler/Profiler.h"
 
 #include <algorithm>
@@ -83,12 +84,19 @@ void GpuProfiler::beginFrame(VkCommandBuffer cmd, uint32_t slot, uint64_t frameI
 void GpuProfiler::beginPass(VkCommandBuffer cmd, const char* name) {
     assert(!mInPass && "GPU passes do not nest");
     Slot& s = mSlots[mRecordingSlot];
-    assert(s.passes.size() < kMaxPassesPerFrame);
     mInPass = true;
-    const uint32_t pass = static_cast<uint32_t>(s.passes.size());
-    s.passes.push_back({name});
     const float color[4] = {0.3f, 0.6f, 0.9f, 1.0f};
     mDevice.beginLabel(cmd, name, color);
+    mInTimedPass = s.passes.size() < kMaxPassesPerFrame;
+    if (!mInTimedPass) {
+        if (!mWarnedUntimed)
+            log::warning("more than " + std::to_string(kMaxPassesPerFrame) +
+                         " GPU passes in a frame: the rest are labelled but not timed");
+        mWarnedUntimed = true;
+        return;
+    }
+    const uint32_t pass = static_cast<uint32_t>(s.passes.size());
+    s.passes.push_back({name});
     if (mTimestampPool)
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, mTimestampPool,
                              2 * (kMaxPassesPerFrame * mRecordingSlot + pass));
@@ -98,6 +106,10 @@ void GpuProfiler::beginPass(VkCommandBuffer cmd, const char* name) {
 void GpuProfiler::endPass(VkCommandBuffer cmd) {
     assert(mInPass);
     mInPass = false;
+    if (!mInTimedPass) {
+        mDevice.endLabel(cmd);
+        return;
+    }
     Slot& s = mSlots[mRecordingSlot];
     const uint32_t pass = static_cast<uint32_t>(s.passes.size() - 1);
     if (mStatisticsPool) vkCmdEndQuery(cmd, mStatisticsPool, kMaxPassesPerFrame * mRecordingSlot + pass);

@@ -19,7 +19,10 @@ class Device;
 
 class GpuProfiler {
 public:
-    static constexpr uint32_t kMaxPassesPerFrame = 64;
+    /// Passes a frame can time; later ones keep their debug label but get no
+    /// queries (a warning says so once), never writing past the frame's
+    /// queries: a dozen subdivision surfaces on r2vb take 5 passes each.
+    static constexpr uint32_t kMaxPassesPerFrame = 256;
 
     GpuProfiler(Device& device, profiler::Profiler& profiler, uint32_t framesInFlight);
     ~GpuProfiler();
@@ -49,10 +52,12 @@ private:
     struct Slot {
         uint64_t frameIndex = 0;
         uint64_t submitNs = 0;
-        std::vector<Pass> passes;
+        std::vector<Pass> passes; ///< the timed ones
         bool pending = false;
     };
 
+    bool mInTimedPass = false;
+    bool mWarnedUntimed = false;
     Device& mDevice;
     profiler::Profiler& mProfiler;
     VkQueryPool mTimestampPool = VK_NULL_HANDLE;
