@@ -62,9 +62,17 @@ Result<std::unique_ptr<DemoScene>> DemoScene::load(const DemoOptions& options, u
             crowd.value()->frameAlso(scene->mSubdivCharacters->bounds());
         }
         if (!options.surfaces.empty()) {
-            // The surfaces stand at the middle of the creatures' circles.
+            // The surfaces stand at the middle of the creatures' circles;
+            // with creatures there too, 3 m further on as the camera starts,
+            // so they stand behind them rather than in them.
             const glm::vec3 site = crowd.value()->site();
-            auto surfaces = SubdivModels::load(options, ground, glm::vec2(site.x, site.z));
+            glm::vec2 at(site.x, site.z);
+            if (options.crowd > 0 || !options.models.empty()) {
+                const glm::vec3 eye = crowd.value()->orbitPose(0.0).position;
+                const glm::vec2 away = glm::vec2(site.x - eye.x, site.z - eye.z);
+                if (glm::length(away) > 1e-3f) at += 3.0f * glm::normalize(away);
+            }
+            auto surfaces = SubdivModels::load(options, ground, at);
             if (!surfaces) return surfaces.error();
             scene->mSurfaces = std::move(surfaces.value());
             if (options.subdiv.levelEnd)
