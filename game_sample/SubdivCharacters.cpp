@@ -1,5 +1,7 @@
 #include "SubdivCharacters.h"
 
+#include "SubdivPlanning.h"
+
 #include "CameraOrbit.h"
 #include "tessera/assets/GltfLoader.h"
 #include "tessera/character/AnimatedBounds.h"
@@ -123,11 +125,7 @@ Result<std::unique_ptr<SubdivCharacters>> SubdivCharacters::load(const DemoOptio
                                     : glm::vec2(-spacing * float(k + 1), 0.8f));
         c.model = glm::translate(glm::mat4(1.0f), glm::vec3(at.x, terrain.heightAt(at.x, at.y), at.y));
         c.model = glm::rotate(c.model, CameraOrbit::kStart, glm::vec3(0, 1, 0));
-        for (int corner = 0; corner < 8; ++corner) {
-            const glm::vec3 p((corner & 1) ? c.box.max.x : c.box.min.x, (corner & 2) ? c.box.max.y : c.box.min.y,
-                              (corner & 4) ? c.box.max.z : c.box.min.z);
-            characters->mBounds.expand(glm::vec3(c.model * glm::vec4(p, 1.0f)));
-        }
+        characters->mBounds.expand(c.box.transformed(c.model));
     }
     return characters;
 }
@@ -136,10 +134,7 @@ backend::SubdivDesc SubdivCharacters::desc(size_t i) const {
     const Character& c = mCharacters[i];
     backend::SubdivDesc desc;
     desc.mesh = &c.mesh;
-    desc.tiles.texels = c.tiles->texels();
-    desc.tiles.width = c.tiles->textureWidth();
-    desc.tiles.height = c.tiles->textureHeight();
-    desc.tiles.records = c.records;
+    desc.tiles = subdivTileData(*c.tiles, c.records);
     return desc;
 }
 
@@ -160,36 +155,18 @@ void SubdivCharacters::skin(Character& c, double seconds) const {
 void SubdivCharacters::update(double seconds, const scene::Camera& camera, uint32_t viewportHeight, float levelCap,
                               uint64_t budget) {
     TESSERA_CPU_SCOPE("subdiv.characters");
-    subdiv::SubdivView view;
-    view.frustum = camera.frustum();
-    view.eye = camera.position();
-    view.pixelsPerMetre = float(viewportHeight) * std::abs(camera.projection()[1][1]) * 0.5f;
-    subdiv::SubdivLodSettings settings;
-    settings.targetPixels = mOptions.pixels.value_or(settings.targetPixels);
-    settings.levelCap = levelCap;
-    settings.fixedLevel = mOptions.level ? std::min(*mOptions.level, levelCap) : 0.0f;
-    settings.mipSelection = mOptions.mips;
-    settings.normals = mOptions.normals;
-    settings.view = mOptions.view;
+    const subdiv::SubdivView view = subdivView(camera, viewportHeight);
+    subdiv::SubdivLodSettings settings = subdivSettings(mOptions, levelCap, mOptions.level.value_or(0.0f));
     settings.displacementScale = 1.0f;
-
-    auto plan = [&](const Character& c, uint64_t share) {
-        settings.maxDisplacement = c.maxDisplacement;
-        settings.albedo = c.albedo;
-        settings.triangleBudget = share;
-        return subdiv::SubdivLod::plan(c.mesh, c.skinned, c.model, view, settings);
-    };
-    std::vector<subdiv::SubdivLodFrame> frames;
-    uint64_t wanted = 0;
-    for (Character& c : mCharacters) {
-        skin(c, seconds);
-        frames.push_back(plan(c, budget));
-        wanted += frames.back().prediction.triangles;
-    }
-    // Over budget, each character's share follows what it would take alone.
-    if (budget > 0 && wanted > budget && mCharacters.size() > 1)
-        for (size_t i = 0; i < mCharacters.size(); ++i)
-            frames[i] = plan(mCharacters[i], std::max<uint64_t>(1, budget * frames[i].prediction.triangles / wanted));
+    for (Character& c : mCharacters) skin(c, seconds);
+    const std::vector<subdiv::SubdivLodFrame> frames =
+        planWithinBudget(mCharacters.size(), budget, [&](size_t i, uint64_t share) {
+            const Character& c = mCharacters[i];
+            settings.maxDisplacement = c.maxDisplacement;
+            settings.albedo = c.albedo;
+            settings.triangleBudget = share;
+            return subdiv::SubdivLod::plan(c.mesh, c.skinned, c.model, view, settings);
+        });
     mDraws.clear();
     mPredicted = 0;
     for (size_t i = 0; i < mCharacters.size(); ++i) {

@@ -1,5 +1,7 @@
 #include "SubdivModels.h"
 
+#include "SubdivPlanning.h"
+
 #include "tessera/core/Log.h"
 #include "tessera/profiler/CpuScope.h"
 #include "tessera/subdiv/DisplacementConversion.h"
@@ -76,6 +78,7 @@ Result<SubdivModels::Surface> SubdivModels::build(const std::string& file, const
     s.pivot = glm::vec3(centre.x, box.min.y, centre.z);
     s.height = std::max(extent.y, 1e-6f);
     s.pose = s.shape.positions;
+    s.posed = s.pose;
     s.cage.resize(s.pose.size());
     return s;
 }
@@ -106,12 +109,7 @@ Result<std::unique_ptr<SubdivModels>> SubdivModels::load(const DemoOptions& opti
                                                            at.y + glm::mix(lo.z, hi.z, b / 8.0f)));
         const glm::mat4 place = glm::translate(glm::mat4(1.0f), glm::vec3(at.x, ground + 0.02f, at.y));
         s.model = place * s.model;
-        const scene::Aabb box = s.box;
-        for (int c = 0; c < 8; ++c) {
-            const glm::vec3 corner((c & 1) ? box.max.x : box.min.x, (c & 2) ? box.max.y : box.min.y,
-                                   (c & 4) ? box.max.z : box.min.z);
-            models->mBounds.expand(glm::vec3(s.model * glm::vec4(corner, 1.0f)));
-        }
+        models->mBounds.expand(s.box.transformed(s.model));
     }
     return models;
 }
@@ -120,12 +118,7 @@ backend::SubdivDesc SubdivModels::desc(size_t i) const {
     const Surface& s = mSurfaces[i];
     backend::SubdivDesc desc;
     desc.mesh = &s.mesh;
-    if (s.tiles) {
-        desc.tiles.texels = s.tiles->texels();
-        desc.tiles.width = s.tiles->textureWidth();
-        desc.tiles.height = s.tiles->textureHeight();
-        desc.tiles.records = s.records;
-    }
+    if (s.tiles) desc.tiles = subdivTileData(*s.tiles, s.records);
     return desc;
 }
 
@@ -153,7 +146,8 @@ void SubdivModels::animate(Surface& s, double seconds) const {
         const glm::vec3 p = s.pose[v] - s.pivot;
         const float angle = sway * std::clamp(p.y / s.height, 0.0f, 1.0f);
         const float c = std::cos(angle), sn = std::sin(angle);
-        s.cage[v] = glm::vec4(s.pivot + glm::vec3(c * p.x + sn * p.z, p.y, -sn * p.x + c * p.z), 1.0f);
+        s.posed[v] = s.pivot + glm::vec3(c * p.x + sn * p.z, p.y, -sn * p.x + c * p.z);
+        s.cage[v] = glm::vec4(s.posed[v], 1.0f);
     }
 }
 
@@ -182,42 +176,25 @@ std::vector<glm::uvec4> SubdivModels::sculpt(Surface& s) {
 void SubdivModels::update(double seconds, const scene::Camera& camera, uint32_t viewportHeight, float levelCap,
                           uint64_t budget) {
     TESSERA_CPU_SCOPE("subdiv.lod");
-    subdiv::SubdivView view;
-    view.frustum = camera.frustum();
-    view.eye = camera.position();
-    view.pixelsPerMetre = float(viewportHeight) * std::abs(camera.projection()[1][1]) * 0.5f;
-    subdiv::SubdivLodSettings settings;
-    settings.targetPixels = mOptions.pixels.value_or(settings.targetPixels);
-    settings.levelCap = levelCap;
+    const subdiv::SubdivView view = subdivView(camera, viewportHeight);
     float level = mOptions.level.value_or(0.0f);
     if (mOptions.level && mLevelEnd && mSweepSeconds > 0.0)
         level += (*mLevelEnd - level) * float(std::clamp(seconds / mSweepSeconds, 0.0, 1.0));
-    settings.fixedLevel = mOptions.level ? std::min(level, levelCap) : 0.0f;
-    settings.mipSelection = mOptions.mips;
-    settings.normals = mOptions.normals;
-    settings.view = mOptions.view;
+    subdiv::SubdivLodSettings settings = subdivSettings(mOptions, levelCap, level);
 
-    // Each surface's share of the budget follows what it would take alone.
-    auto plan = [&](Surface& s, uint64_t share) {
-        std::vector<glm::vec3> base(s.cage.size());
-        for (size_t v = 0; v < base.size(); ++v) base[v] = glm::vec3(s.cage[v]);
-        settings.displacementScale = s.tiles ? 1.0f : 0.0f;
-        settings.maxDisplacement = s.maxDisplacement;
-        settings.triangleBudget = share;
-        return subdiv::SubdivLod::plan(s.mesh, base, s.model, view, settings);
-    };
-    std::vector<subdiv::SubdivLodFrame> frames;
     std::vector<std::vector<glm::uvec4>> rewritten;
-    uint64_t wanted = 0;
     for (Surface& s : mSurfaces) {
         animate(s, seconds);
         rewritten.push_back(sculpt(s));
-        frames.push_back(plan(s, budget));
-        wanted += frames.back().prediction.triangles;
     }
-    if (budget > 0 && wanted > budget && mSurfaces.size() > 1)
-        for (size_t i = 0; i < mSurfaces.size(); ++i)
-            frames[i] = plan(mSurfaces[i], std::max<uint64_t>(1, budget * frames[i].prediction.triangles / wanted));
+    const std::vector<subdiv::SubdivLodFrame> frames =
+        planWithinBudget(mSurfaces.size(), budget, [&](size_t i, uint64_t share) {
+            const Surface& s = mSurfaces[i];
+            settings.displacementScale = s.tiles ? 1.0f : 0.0f;
+            settings.maxDisplacement = s.maxDisplacement;
+            settings.triangleBudget = share;
+            return subdiv::SubdivLod::plan(s.mesh, s.posed, s.model, view, settings);
+        });
     mDraws.clear();
     mPredicted = 0;
     for (size_t i = 0; i < mSurfaces.size(); ++i) {

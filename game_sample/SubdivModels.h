@@ -88,8 +88,9 @@ private:
         glm::vec3 pivot{0.0f}; ///< object-space centre of the sway
         float height = 1.0f;   ///< object-space height of the cage
         backend::SubdivHandle handle;
-        std::vector<glm::vec3> pose;
-        std::vector<glm::vec4> cage;
+        std::vector<glm::vec3> pose;  ///< the rest pose
+        std::vector<glm::vec3> posed; ///< this frame's control points
+        std::vector<glm::vec4> cage;  ///< the same, as the backend takes them
         std::optional<subdiv::SculptBrush> brush; ///< --sculpt
     };
 

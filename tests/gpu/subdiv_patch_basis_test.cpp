@@ -7,6 +7,7 @@
 // within 1e-5 of the diagonal, normals within 0.1 degree where the surface
 // has one. What the domain and evaluation vertex shaders will compute.
 #include "GpuTestDevice.h"
+#include "OsdShapes.h"
 
 #include "tessera/gpu/Barriers.h"
 #include "tessera/gpu/Buffer.h"
@@ -107,13 +108,8 @@ TEST(SubdivPatchBasisGpu, OpenSubdivGlslMatchesFarOnEveryShape) {
     gpu::Device* device = GpuTestDevice::get(why);
     if (!device) GTEST_SKIP() << "no Vulkan device: " << why;
     const uint64_t messagesBefore = GpuTestDevice::validationMessages();
-    const std::filesystem::path dir = std::filesystem::path(TESSERA_TESTDATA_DIR) / "osd_shapes";
-    ASSERT_TRUE(std::filesystem::exists(dir)) << dir;
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(dir))
-        if (entry.path().extension() == ".obj") files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    ASSERT_GE(files.size(), 12u);
+    const std::vector<std::filesystem::path> files = osdShapeFiles();
+    ASSERT_GE(files.size(), 12u) << "OpenSubdiv's shapes in " << TESSERA_TESTDATA_DIR;
     for (const auto& file : files) {
         SCOPED_TRACE(file.filename().string());
         auto shape = subdiv::readObjShape(file);

@@ -14,6 +14,7 @@
 // three.
 #include "GpuSubdiv.h"
 #include "GpuTestDevice.h"
+#include "OsdShapes.h"
 
 #include "tessera/assets/GltfLoader.h"
 #include "tessera/gpu/Barriers.h"
@@ -185,13 +186,8 @@ TEST(SubdivPipelineGpu, EvaluationMatchesOpenSubdivOnEveryShape) {
     gpu::Device* device = GpuTestDevice::get(why);
     if (!device) GTEST_SKIP() << "no Vulkan device: " << why;
     const uint64_t messagesBefore = GpuTestDevice::validationMessages();
-    const std::filesystem::path dir = std::filesystem::path(TESSERA_TESTDATA_DIR) / "osd_shapes";
-    ASSERT_TRUE(std::filesystem::exists(dir)) << dir;
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(dir))
-        if (entry.path().extension() == ".obj") files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    ASSERT_GE(files.size(), 12u);
+    const std::vector<std::filesystem::path> files = osdShapeFiles();
+    ASSERT_GE(files.size(), 12u) << "OpenSubdiv's shapes in " << TESSERA_TESTDATA_DIR;
     for (const auto& file : files) {
         auto shape = subdiv::readObjShape(file);
         ASSERT_TRUE(shape) << shape.error().message;
