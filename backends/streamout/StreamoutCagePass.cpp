@@ -19,16 +19,9 @@ StreamoutCagePass::StreamoutCagePass(gpu::Device& device) {
                                    {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
                                    {TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex}},
                                   0, 0, "streamout.cage.layout");
-    gpu::GraphicsPipelineDesc desc;
-    desc.name = "streamout.cage";
-    desc.layout = &mLayout;
-    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, streamout_cage_vert_spv}};
+    gpu::GraphicsPipelineDesc desc = streamout::streamOutPipelineDesc(
+        "streamout.cage", mLayout, {{VK_SHADER_STAGE_VERTEX_BIT, streamout_cage_vert_spv}});
     // No vertex buffer: the vertex ID is the grid point.
-    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-    desc.cullMode = VK_CULL_MODE_NONE;
-    desc.depthTest = false;
-    desc.depthWrite = false;
-    desc.rasterizerDiscard = true;
     mPipeline = gpu::Pipeline(device, desc);
 }
 

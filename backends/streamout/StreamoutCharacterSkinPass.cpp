@@ -15,21 +15,14 @@ StreamoutCharacterSkinPass::StreamoutCharacterSkinPass(gpu::Device& device) {
     const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
     mLayout = characterLayout(device, CharacterBindings::Skin, vertex, VK_DESCRIPTOR_TYPE_MAX_ENUM, 0, 0,
                               "streamout.characterSkin.layout");
-    gpu::GraphicsPipelineDesc desc;
-    desc.name = "streamout.characterSkin";
-    desc.layout = &mLayout;
-    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, streamout_character_skin_vert_spv}};
+    gpu::GraphicsPipelineDesc desc = streamout::streamOutPipelineDesc(
+        "streamout.characterSkin", mLayout, {{VK_SHADER_STAGE_VERTEX_BIT, streamout_character_skin_vert_spv}});
     desc.vertexBindings = {{0, sizeof(shader::CharacterVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, positionU)},
                              {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, normalV)},
                              {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, tangent)},
                              {3, 0, VK_FORMAT_R32G32B32A32_UINT, offsetof(shader::CharacterVertex, joints)},
                              {4, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, weights)}};
-    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-    desc.cullMode = VK_CULL_MODE_NONE;
-    desc.depthTest = false;
-    desc.depthWrite = false;
-    desc.rasterizerDiscard = true;
     mPipeline = gpu::Pipeline(device, desc);
 }
 

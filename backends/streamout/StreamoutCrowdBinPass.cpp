@@ -19,19 +19,13 @@ constexpr VkDeviceSize kRecordBytes = 16; // a survivor record, a list entry
 
 StreamoutCrowdBinPass::StreamoutCrowdBinPass(gpu::Device& device, const gpu::PipelineLayout& layout)
     : mLayout(&layout) {
-    gpu::GraphicsPipelineDesc desc;
-    desc.name = "streamout.crowd.bin";
-    desc.layout = &layout;
-    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, streamout_crowd_bin_vert_spv},
-                   {VK_SHADER_STAGE_GEOMETRY_BIT, streamout_crowd_bin_geom_spv}};
+    gpu::GraphicsPipelineDesc desc =
+        streamout::streamOutPipelineDesc("streamout.crowd.bin", layout,
+                                         {{VK_SHADER_STAGE_VERTEX_BIT, streamout_crowd_bin_vert_spv},
+                                          {VK_SHADER_STAGE_GEOMETRY_BIT, streamout_crowd_bin_geom_spv}});
     // The survivors' stream: (instance, next state, id, creature) per point.
     desc.vertexBindings = {{0, uint32_t(kRecordBytes), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32A32_UINT, 0}};
-    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-    desc.cullMode = VK_CULL_MODE_NONE;
-    desc.depthTest = false;
-    desc.depthWrite = false;
-    desc.rasterizerDiscard = true;
     mPipeline = gpu::Pipeline(device, desc);
 }
 

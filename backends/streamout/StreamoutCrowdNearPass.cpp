@@ -15,16 +15,7 @@ constexpr uint32_t kEntryBytes = sizeof(shader::CrowdListEntry);
 
 gpu::GraphicsPipelineDesc pointsDesc(const gpu::PipelineLayout& layout, const char* name,
                                      std::span<const uint32_t> vertex) {
-    gpu::GraphicsPipelineDesc desc;
-    desc.name = name;
-    desc.layout = &layout;
-    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vertex}};
-    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-    desc.cullMode = VK_CULL_MODE_NONE;
-    desc.depthTest = false;
-    desc.depthWrite = false;
-    desc.rasterizerDiscard = true;
-    return desc;
+    return streamout::streamOutPipelineDesc(name, layout, {{VK_SHADER_STAGE_VERTEX_BIT, vertex}});
 }
 
 } // namespace

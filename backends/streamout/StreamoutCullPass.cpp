@@ -20,19 +20,13 @@ StreamoutCullPass::StreamoutCullPass(gpu::Device& device) {
                                    {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
                                    {SO_BINDING_CAGE, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, stages}},
                                   0, 0, "streamout.cull.layout");
-    gpu::GraphicsPipelineDesc desc;
-    desc.name = "streamout.cull";
-    desc.layout = &mLayout;
-    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, streamout_cull_vert_spv},
-                   {VK_SHADER_STAGE_GEOMETRY_BIT, streamout_cull_geom_spv}};
+    gpu::GraphicsPipelineDesc desc =
+        streamout::streamOutPipelineDesc("streamout.cull", mLayout,
+                                         {{VK_SHADER_STAGE_VERTEX_BIT, streamout_cull_vert_spv},
+                                          {VK_SHADER_STAGE_GEOMETRY_BIT, streamout_cull_geom_spv}});
     // The visible-patch stream, one point per patch.
     desc.vertexBindings = {{0, sizeof(uint32_t), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertexAttributes = {{0, 0, VK_FORMAT_R32_UINT, 0}};
-    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-    desc.cullMode = VK_CULL_MODE_NONE;
-    desc.depthTest = false;
-    desc.depthWrite = false;
-    desc.rasterizerDiscard = true;
     mPipeline = gpu::Pipeline(device, desc);
 }
 

@@ -54,18 +54,11 @@ StreamoutFactorPass::StreamoutFactorPass(gpu::Device& device) {
                                    {TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
                                    {SO_BINDING_CAGE, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex}},
                                   0, 0, "streamout.factors.layout");
-    gpu::GraphicsPipelineDesc desc;
-    desc.name = "streamout.factors";
-    desc.layout = &mLayout;
-    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, streamout_factors_vert_spv}};
+    gpu::GraphicsPipelineDesc desc = streamout::streamOutPipelineDesc(
+        "streamout.factors", mLayout, {{VK_SHADER_STAGE_VERTEX_BIT, streamout_factors_vert_spv}});
     // The survivors' stream, one point per surviving patch.
     desc.vertexBindings = {{0, sizeof(uint32_t), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertexAttributes = {{0, 0, VK_FORMAT_R32_UINT, 0}};
-    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-    desc.cullMode = VK_CULL_MODE_NONE;
-    desc.depthTest = false;
-    desc.depthWrite = false;
-    desc.rasterizerDiscard = true;
     mPipeline = gpu::Pipeline(device, desc);
 }
 

@@ -18,4 +18,18 @@ void endStreamOut(VkCommandBuffer cmd) {
     vkCmdEndRendering(cmd);
 }
 
+gpu::GraphicsPipelineDesc streamOutPipelineDesc(std::string name, const gpu::PipelineLayout& layout,
+                                                std::vector<gpu::ShaderStage> stages) {
+    gpu::GraphicsPipelineDesc desc;
+    desc.name = std::move(name);
+    desc.layout = &layout;
+    desc.stages = std::move(stages);
+    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+    desc.cullMode = VK_CULL_MODE_NONE;
+    desc.depthTest = false;
+    desc.depthWrite = false;
+    desc.rasterizerDiscard = true;
+    return desc;
+}
+
 } // namespace tessera::backends::streamout

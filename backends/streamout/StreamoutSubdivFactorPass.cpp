@@ -24,16 +24,9 @@ StreamoutSubdivFactorPass::StreamoutSubdivFactorPass(gpu::Device& device) {
     bindings.push_back({TS_BINDING_SUBDIV_SUPPORT, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex});
     bindings.push_back({TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex});
     mLayout = gpu::PipelineLayout(device, bindings, 0, 0, "streamout.subdivFactors.layout");
-    gpu::GraphicsPipelineDesc desc;
-    desc.name = "streamout.subdivFactors";
-    desc.layout = &mLayout;
-    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, streamout_subdiv_factors_vert_spv}};
+    gpu::GraphicsPipelineDesc desc = streamout::streamOutPipelineDesc(
+        "streamout.subdivFactors", mLayout, {{VK_SHADER_STAGE_VERTEX_BIT, streamout_subdiv_factors_vert_spv}});
     // No vertex stream: the vertex index is the domain.
-    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-    desc.cullMode = VK_CULL_MODE_NONE;
-    desc.depthTest = false;
-    desc.depthWrite = false;
-    desc.rasterizerDiscard = true;
     mPipeline = gpu::Pipeline(device, desc);
 }
 

@@ -22,16 +22,9 @@ StreamoutSubdivRefinePass::StreamoutSubdivRefinePass(gpu::Device& device) {
                                    {TS_BINDING_SUBDIV_ENTRIES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex},
                                    {TS_BINDING_SUBDIV_CAGE, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex}},
                                   0, 0, "streamout.subdivRefine.layout");
-    gpu::GraphicsPipelineDesc desc;
-    desc.name = "streamout.subdivRefine";
-    desc.layout = &mLayout;
-    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, streamout_subdiv_refine_vert_spv}};
+    gpu::GraphicsPipelineDesc desc = streamout::streamOutPipelineDesc(
+        "streamout.subdivRefine", mLayout, {{VK_SHADER_STAGE_VERTEX_BIT, streamout_subdiv_refine_vert_spv}});
     // No vertex stream: the vertex index is the refined point.
-    desc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-    desc.cullMode = VK_CULL_MODE_NONE;
-    desc.depthTest = false;
-    desc.depthWrite = false;
-    desc.rasterizerDiscard = true;
     mPipeline = gpu::Pipeline(device, desc);
 }
 
