@@ -1,25 +1,35 @@
 # Installs Tessera as a CMake package so a game can
 #   find_package(Tessera REQUIRED)
-#   target_link_libraries(game PRIVATE Tessera::core Tessera::gpu Tessera::assets Tessera::subdiv)
-# (Tessera::assets, the glTF/Draco character loader, is optional: link it only
-# to load .gltf/.glb files; Tessera::subdiv, the Catmull-Clark base surfaces,
-# likewise. Both link their dependencies privately.)
+#   target_link_libraries(game PRIVATE Tessera::runtime)
+# Tessera::runtime (backend and device selection, the frame loop, the world,
+# captures, benchmarks) brings Tessera::gpu, Tessera::assets, Tessera::subdiv
+# and Tessera::core; a game that writes its own host links those alone.
+# Tessera::assets (glTF/Draco) and Tessera::subdiv (OpenSubdiv) link their
+# dependencies privately. examples/embed is such a game; docs/EMBEDDING.md
+# and the README's "Using Tessera in your game" describe it.
 include(CMakePackageConfigHelpers)
 
-install(TARGETS tessera_core tessera_gpu tessera_assets tessera_subdiv EXPORT TesseraTargets
+install(TARGETS tessera_core tessera_gpu tessera_assets tessera_subdiv tessera_runtime EXPORT TesseraTargets
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# Public headers, the host/shader layouts among them (tessera/shaders/), all
+# under include/tessera so none can collide with a game's own.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/include/tessera DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-# Host/shader layouts and shared GLSL, for games that write their own passes.
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/shaders/shared/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/include/tessera DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# Shared GLSL for games that write their own passes (compile with
+# -I<prefix>/share/tessera/glsl -I<prefix>/include).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/shaders/include/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tessera/glsl)
 install(DIRECTORY ${PROJECT_BINARY_DIR}/content/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tessera/content OPTIONAL)
 install(EXPORT TesseraTargets NAMESPACE Tessera:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/Tessera)
 
+set(TESSERA_PACKAGE_PLUGIN_DIR ${CMAKE_INSTALL_LIBDIR}/tessera)
+set(TESSERA_PACKAGE_CONTENT_DIR ${CMAKE_INSTALL_DATADIR}/tessera/content)
+set(TESSERA_PACKAGE_GLSL_DIR ${CMAKE_INSTALL_DATADIR}/tessera/glsl)
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/TesseraConfig.cmake.in
     ${PROJECT_BINARY_DIR}/TesseraConfig.cmake
-    INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/Tessera)
+    INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/Tessera
+    PATH_VARS TESSERA_PACKAGE_PLUGIN_DIR TESSERA_PACKAGE_CONTENT_DIR TESSERA_PACKAGE_GLSL_DIR)
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/TesseraConfigVersion.cmake
     COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/TesseraConfig.cmake ${PROJECT_BINARY_DIR}/TesseraConfigVersion.cmake

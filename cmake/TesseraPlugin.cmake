@@ -1,6 +1,6 @@
 # tessera_add_backend_plugin(<name> SOURCES ...): builds backend plugin <name>
-# as the shared module tessera_backend_<name>.so in lib/tessera/, the folder
-# the plugin loader searches next to the executable. Only the entry point is
+# as the shared module tessera_backend_<name>.so in <libdir>/tessera/, the
+# folder the plugin loader searches next to libtessera_core.so. Only the entry point is
 # exported (hidden visibility), so plugins cannot clash with each other.
 function(tessera_add_backend_plugin name)
     cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})

@@ -13,7 +13,7 @@
 set(TESSERA_GENERATED_GLSL_DIR ${PROJECT_BINARY_DIR}/generated/glsl)
 set(TESSERA_SHADER_INCLUDE_DIRS
     ${PROJECT_SOURCE_DIR}/engine/shaders/include
-    ${PROJECT_SOURCE_DIR}/engine/shaders/shared
+    ${PROJECT_SOURCE_DIR}/engine/include
     ${TESSERA_GENERATED_GLSL_DIR}
     CACHE INTERNAL "Shared GLSL include directories")
 

@@ -1,13 +1,13 @@
 // tessera-demo: the crowd/terrain demo's entry point.
-#include "DemoApp.h"
-#include "DemoOptions.h"
+#include "tessera/runtime/Runner.h"
+#include "CommandLine.h"
 #include "tessera/core/Log.h"
 
 #include <cstdio>
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
-    auto options = tessera::demo::parseDemoOptions(args);
+    auto options = tessera::demo::parseCommandLine(args);
     if (!options) {
         tessera::log::error(options.error().message);
         return 2;
@@ -16,5 +16,5 @@ int main(int argc, char** argv) {
         std::fputs(tessera::demo::helpText(), stdout);
         return 0;
     }
-    return tessera::demo::runDemo(options.value());
+    return tessera::runtime::execute(options.value());
 }

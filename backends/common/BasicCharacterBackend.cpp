@@ -1,8 +1,8 @@
 #include "BasicCharacterBackend.h"
 
 #include "CommandHelpers.h"
-#include "CrowdLod.h"
-#include "FrameUniforms.h"
+#include "tessera/shaders/CrowdLod.h"
+#include "tessera/shaders/FrameUniforms.h"
 #include "tessera/character/CharacterAsset.h"
 #include "tessera/core/Log.h"
 #include "tessera/gpu/FrameContext.h"

@@ -1,6 +1,6 @@
 #include "BasicTerrainBackend.h"
 
-#include "TessFactors.h"
+#include "tessera/shaders/TessFactors.h"
 
 #include "FrameUniformsBuilder.h"
 #include "tessera/gpu/FrameContext.h"

@@ -1,8 +1,8 @@
 #include "CrowdDescriptors.h"
 
-#include "CharacterUniforms.h"
+#include "tessera/shaders/CharacterUniforms.h"
 #include "CommandHelpers.h"
-#include "FrameUniforms.h"
+#include "tessera/shaders/FrameUniforms.h"
 
 namespace tessera::backends {
 namespace {

@@ -1,6 +1,6 @@
 #include "CrowdMeshPass.h"
 
-#include "CharacterUniforms.h"
+#include "tessera/shaders/CharacterUniforms.h"
 #include "tessera/gpu/Device.h"
 #include "tessera/gpu/FrameContext.h"
 

@@ -1,7 +1,7 @@
 #include "EmulatedCharacterPass.h"
 
 #include "CommandHelpers.h"
-#include "FrameUniforms.h"
+#include "tessera/shaders/FrameUniforms.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/tessellator/Tessellator.h"
 

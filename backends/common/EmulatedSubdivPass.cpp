@@ -1,8 +1,8 @@
 #include "EmulatedSubdivPass.h"
 
 #include "CommandHelpers.h"
-#include "FrameUniforms.h"
-#include "TessPattern.h"
+#include "tessera/shaders/FrameUniforms.h"
+#include "tessera/shaders/TessPattern.h"
 
 #include "subdiv.frag.spv.h"
 #include "subdiv_emulated.vert.spv.h"

@@ -1,8 +1,8 @@
 #include "EmulatedTerrainBackend.h"
 
-#include "FrameUniforms.h"
-#include "TerrainUniforms.h"
-#include "TessPattern.h"
+#include "tessera/shaders/FrameUniforms.h"
+#include "tessera/shaders/TerrainUniforms.h"
+#include "tessera/shaders/TessPattern.h"
 #include "tessera/subdiv/SubdivGpuMesh.h"
 #include "tessera/terrain/Terrain.h"
 #include "tessera/tessellator/PatternLibrary.h"

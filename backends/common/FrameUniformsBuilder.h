@@ -2,7 +2,7 @@
 /// @file FrameUniformsBuilder.h
 /// Fills the shared FrameUniforms layout from the contract's FrameInfo.
 
-#include "FrameUniforms.h"
+#include "tessera/shaders/FrameUniforms.h"
 #include "tessera/backend/FrameInfo.h"
 
 namespace tessera::backends {

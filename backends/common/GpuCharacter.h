@@ -5,7 +5,7 @@
 /// its maps, and the animated, compressed cage each drawn instance gets per
 /// frame (the paper's 128-bit vertices, CompressedVertex.h).
 
-#include "CharacterUniforms.h"
+#include "tessera/shaders/CharacterUniforms.h"
 #include "tessera/backend/CharacterDesc.h"
 #include "tessera/character/CageMesh.h"
 #include "tessera/core/Result.h"

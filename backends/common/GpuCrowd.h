@@ -10,7 +10,7 @@
 /// and slots through the usage it names at creation (storage, transform
 /// feedback or transfer); the LOD state is the technique's own.
 
-#include "CrowdInstance.h"
+#include "tessera/shaders/CrowdInstance.h"
 #include "GpuCharacter.h"
 #include "tessera/backend/CrowdDesc.h"
 #include "tessera/core/Result.h"

@@ -7,7 +7,7 @@
 /// a ring of per-frame cage buffers, the displacement tiles as one R32F
 /// texture with their records, and the descriptors subdiv_eval.glsl binds.
 
-#include "SubdivLayout.h"
+#include "tessera/shaders/SubdivLayout.h"
 #include "tessera/backend/SubdivDesc.h"
 #include "tessera/core/Result.h"
 #include "tessera/gpu/Buffer.h"

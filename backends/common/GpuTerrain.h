@@ -5,7 +5,7 @@
 /// splatted into it), its uniforms, the control mesh's quad, per-frame streams
 /// of visible patch indices and the detail errors the adaptive metric reads.
 
-#include "TerrainUniforms.h"
+#include "tessera/shaders/TerrainUniforms.h"
 #include "tessera/core/Result.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/Device.h"

@@ -1,6 +1,6 @@
 #include "TerrainSplatPass.h"
 
-#include "CraterProfile.h"
+#include "tessera/shaders/CraterProfile.h"
 
 #include "fullscreen.vert.spv.h"
 #include "terrain_splat.frag.spv.h"

@@ -1,7 +1,7 @@
 #include "CharacterPatchPass.h"
 
 #include "CommandHelpers.h"
-#include "FrameUniforms.h"
+#include "tessera/shaders/FrameUniforms.h"
 #include "tessera/gpu/FrameContext.h"
 
 #include "character.frag.spv.h"

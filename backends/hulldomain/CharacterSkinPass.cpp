@@ -3,7 +3,7 @@
 #include "tessera/gpu/Barriers.h"
 
 #include "CommandHelpers.h"
-#include "FrameUniforms.h"
+#include "tessera/shaders/FrameUniforms.h"
 #include "tessera/gpu/FrameContext.h"
 
 #include "character_skin.comp.spv.h"

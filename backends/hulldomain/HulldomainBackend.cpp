@@ -4,7 +4,7 @@
 #include "BasicCharacterBackend.h"
 #include "CharacterPatchPass.h"
 #include "CharacterSkinPass.h"
-#include "FrameUniforms.h"
+#include "tessera/shaders/FrameUniforms.h"
 #include "GpuCrowdSet.h"
 #include "HulldomainCrowdPass.h"
 #include "HulldomainSubdivPass.h"

@@ -1,7 +1,7 @@
 #include "HulldomainSubdivPass.h"
 
 #include "CommandHelpers.h"
-#include "FrameUniforms.h"
+#include "tessera/shaders/FrameUniforms.h"
 #include "tessera/gpu/Barriers.h"
 
 #include <algorithm>

@@ -4,8 +4,8 @@
 
 #include "CommandHelpers.h"
 
-#include "FrameUniforms.h"
-#include "TerrainUniforms.h"
+#include "tessera/shaders/FrameUniforms.h"
+#include "tessera/shaders/TerrainUniforms.h"
 
 #include "terrain_factors.comp.spv.h"
 

@@ -6,7 +6,7 @@
 /// is evaluated once.
 
 #include "GpuTerrain.h"
-#include "TessFactors.h"
+#include "tessera/shaders/TessFactors.h"
 #include "tessera/gpu/ComputePipeline.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/PipelineLayout.h"

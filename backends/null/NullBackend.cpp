@@ -2,7 +2,7 @@
 // noop renderer). It validates every call the way a real backend would use
 // it and counts what a real backend would draw, so tests of the data model
 // (scene, culling, tessellation levels, splats) run anywhere, CI included.
-#include "CrowdLod.h"
+#include "tessera/shaders/CrowdLod.h"
 #include "NullCrowd.h"
 #include "tessera/backend/CrowdChecks.h"
 #include "tessera/backend/SubdivChecks.h"

@@ -2,7 +2,7 @@
 
 #include "tessera/gpu/Barriers.h"
 
-#include "FrameUniforms.h"
+#include "tessera/shaders/FrameUniforms.h"
 #include "R2vbRecording.h"
 #include "shaders/R2vbLayout.h"
 #include "tessera/gpu/FrameContext.h"

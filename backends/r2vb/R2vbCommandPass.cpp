@@ -1,9 +1,9 @@
 #include "R2vbCommandPass.h"
 
-#include "FrameUniforms.h"
-#include "TerrainUniforms.h"
-#include "TessFactors.h"
-#include "TessPattern.h"
+#include "tessera/shaders/FrameUniforms.h"
+#include "tessera/shaders/TerrainUniforms.h"
+#include "tessera/shaders/TessFactors.h"
+#include "tessera/shaders/TessPattern.h"
 
 #include "r2vb_commands.frag.spv.h"
 #include "r2vb_commands.vert.spv.h"

@@ -1,6 +1,6 @@
 #include "R2vbCrowdNearPass.h"
 
-#include "CharacterUniforms.h"
+#include "tessera/shaders/CharacterUniforms.h"
 #include "CommandHelpers.h"
 #include "R2vbRecording.h"
 

@@ -1,6 +1,6 @@
 #include "R2vbCrowdRecording.h"
 
-#include "CrowdInstance.h"
+#include "tessera/shaders/CrowdInstance.h"
 #include "tessera/gpu/Barriers.h"
 
 namespace tessera::backends::r2vb::crowd {

@@ -1,8 +1,8 @@
 #include "R2vbFactorPass.h"
 
-#include "FrameUniforms.h"
-#include "TerrainUniforms.h"
-#include "TessFactors.h"
+#include "tessera/shaders/FrameUniforms.h"
+#include "tessera/shaders/TerrainUniforms.h"
+#include "tessera/shaders/TessFactors.h"
 
 #include "r2vb_factors.frag.spv.h"
 #include "r2vb_factors.vert.spv.h"

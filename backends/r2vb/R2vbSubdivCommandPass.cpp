@@ -1,7 +1,7 @@
 #include "R2vbSubdivCommandPass.h"
 
 #include "R2vbRecording.h"
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 #include "tessera/gpu/Barriers.h"
 
 #include "r2vb_commands.frag.spv.h"

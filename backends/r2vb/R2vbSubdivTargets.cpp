@@ -1,6 +1,6 @@
 #include "R2vbSubdivTargets.h"
 
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 
 #include <algorithm>
 #include <string>

@@ -1,6 +1,6 @@
 #include "R2vbTargets.h"
 
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 
 #include <string>
 

@@ -1,6 +1,6 @@
 #include "StreamoutBuffers.h"
 
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 
 #include <memory>
 #include <string>

@@ -2,10 +2,10 @@
 
 #include "tessera/gpu/Barriers.h"
 
-#include "FrameUniforms.h"
+#include "tessera/shaders/FrameUniforms.h"
 #include "StreamoutRecording.h"
-#include "TerrainUniforms.h"
-#include "TessFactors.h"
+#include "tessera/shaders/TerrainUniforms.h"
+#include "tessera/shaders/TessFactors.h"
 
 #include "streamout_cage.vert.spv.h"
 

@@ -2,7 +2,7 @@
 
 #include "tessera/gpu/Barriers.h"
 
-#include "FrameUniforms.h"
+#include "tessera/shaders/FrameUniforms.h"
 #include "StreamoutRecording.h"
 #include "tessera/gpu/Device.h"
 #include "tessera/gpu/FrameContext.h"

@@ -1,7 +1,7 @@
 #include "StreamoutCrowdBindings.h"
 
 #include "CommandHelpers.h"
-#include "CrowdInstance.h"
+#include "tessera/shaders/CrowdInstance.h"
 #include "tessera/gpu/Device.h"
 
 namespace tessera::backends {

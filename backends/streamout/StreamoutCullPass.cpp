@@ -2,9 +2,9 @@
 
 #include "tessera/gpu/Barriers.h"
 
-#include "FrameUniforms.h"
+#include "tessera/shaders/FrameUniforms.h"
 #include "StreamoutRecording.h"
-#include "TerrainUniforms.h"
+#include "tessera/shaders/TerrainUniforms.h"
 #include "streamout_bindings.h"
 
 #include "streamout_cull.geom.spv.h"

@@ -2,11 +2,11 @@
 
 #include "tessera/gpu/Barriers.h"
 
-#include "FrameUniforms.h"
+#include "tessera/shaders/FrameUniforms.h"
 #include "StreamoutRecording.h"
-#include "TerrainUniforms.h"
-#include "TessFactors.h"
-#include "TessPattern.h"
+#include "tessera/shaders/TerrainUniforms.h"
+#include "tessera/shaders/TessFactors.h"
+#include "tessera/shaders/TessPattern.h"
 #include "streamout_bindings.h"
 
 #include "streamout_factors.vert.spv.h"

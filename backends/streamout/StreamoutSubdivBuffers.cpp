@@ -1,6 +1,6 @@
 #include "StreamoutSubdivBuffers.h"
 
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 
 #include <string>
 

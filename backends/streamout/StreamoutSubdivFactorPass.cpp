@@ -3,7 +3,7 @@
 #include "CommandHelpers.h"
 #include "StreamoutRecording.h"
 #include "StreamoutSubdivBuffers.h"
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 #include "tessera/gpu/Barriers.h"
 
 #include "streamout_subdiv_factors.vert.spv.h"

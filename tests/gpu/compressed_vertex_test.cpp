@@ -12,7 +12,7 @@
 #include "tessera/gpu/ComputePipeline.h"
 #include "tessera/gpu/PipelineLayout.h"
 
-#include "CompressedVertex.h"
+#include "tessera/shaders/CompressedVertex.h"
 #include "compressed_vertex.comp.spv.h"
 
 #include <gtest/gtest.h>

@@ -20,7 +20,7 @@
 #include "tessera/subdiv/SubdivGpuMesh.h"
 #include "tessera/subdiv/SubdivLod.h"
 #include "tessera/subdiv/SubdivSurface.h"
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 
 #include <gtest/gtest.h>
 

@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
 using namespace tessera;
 using namespace tessera::backend;
 
@@ -121,15 +125,65 @@ TEST(PluginLoader, TemplatePluginImplementsTheWholeContract) {
     EXPECT_EQ(recorder.commands(), (std::vector<std::string>{"initialize", "beginFrame", "endFrame", "shutdown"}));
 }
 
-TEST(PluginLoader, SearchPathHonoursEnvironmentAndExecutableDir) {
-    setenv("TESSERA_PLUGIN_PATH", "/tmp/a:/tmp/b", 1);
+TEST(PluginLoader, SearchPathHonoursEnvironmentThenLibraryThenInstall) {
+    const std::filesystem::path a = std::filesystem::path(TESSERA_TEST_OUTPUT_DIR) / "plugin-env-a";
+    const std::filesystem::path b = std::filesystem::path(TESSERA_TEST_OUTPUT_DIR) / "plugin-env-b";
+    std::filesystem::create_directories(a);
+    std::filesystem::create_directories(b);
+    setenv("TESSERA_PLUGIN_DIR", (a.string() + ":" + b.string()).c_str(), 1);
     PluginLoader loader;
-    unsetenv("TESSERA_PLUGIN_PATH");
+    unsetenv("TESSERA_PLUGIN_DIR");
     loader.addSearchDirectory("/tmp/first");
     auto dirs = loader.searchDirectories();
-    ASSERT_GE(dirs.size(), 4u);
+    ASSERT_EQ(dirs.size(), 5u);
     EXPECT_EQ(dirs[0], "/tmp/first");
-    EXPECT_EQ(dirs[1], "/tmp/a");
-    EXPECT_EQ(dirs[2], "/tmp/b");
-    EXPECT_EQ(dirs.back().filename(), "tessera");
+    EXPECT_EQ(dirs[1], a);
+    EXPECT_EQ(dirs[2], b);
+    // Next to libtessera_core.so (the build tree's lib/tessera), whatever the
+    // executable: this test's binary is in bin/, not next to lib/.
+    EXPECT_EQ(std::filesystem::canonical(dirs[3]), std::filesystem::canonical(TESSERA_PLUGIN_DIR));
+    EXPECT_EQ(dirs[4], PluginLoader::installPluginDirectory());
+    EXPECT_EQ(dirs[4].filename(), "tessera");
+}
+
+// A TESSERA_PLUGIN_DIR the user set but that points nowhere, or names a
+// file that is not a plugin, is an error naming the path, not a silent skip.
+TEST(PluginLoader, EnvironmentPointingNowhereIsAnErrorNamingIt) {
+    setenv("TESSERA_PLUGIN_DIR", "/nonexistent/tessera-plugins", 1);
+    PluginLoader loader;
+    unsetenv("TESSERA_PLUGIN_DIR");
+    BackendRegistry registry;
+    auto status = loader.loadBackend("null", registry);
+    ASSERT_FALSE(status.ok());
+    EXPECT_NE(status.error().message.find("TESSERA_PLUGIN_DIR"), std::string::npos) << status.error().message;
+    EXPECT_NE(status.error().message.find("/nonexistent/tessera-plugins"), std::string::npos) << status.error().message;
+    const auto errors = loader.loadAll(registry);
+    ASSERT_FALSE(errors.empty());
+    EXPECT_NE(errors.front().message.find("/nonexistent/tessera-plugins"), std::string::npos);
+}
+
+TEST(PluginLoader, EnvironmentNamingANonPluginFileIsAnErrorNamingIt) {
+    const std::filesystem::path file = std::filesystem::path(TESSERA_TEST_OUTPUT_DIR) / "not_a_plugin.txt";
+    { std::ofstream(file) << "hello"; }
+    setenv("TESSERA_PLUGIN_DIR", file.c_str(), 1);
+    PluginLoader loader;
+    unsetenv("TESSERA_PLUGIN_DIR");
+    BackendRegistry registry;
+    auto status = loader.loadBackend("null", registry);
+    ASSERT_FALSE(status.ok());
+    const std::string& msg = status.error().message;
+    EXPECT_NE(msg.find("TESSERA_PLUGIN_DIR"), std::string::npos) << msg;
+    EXPECT_NE(msg.find(file.string()), std::string::npos) << msg;
+    EXPECT_NE(msg.find("not a shared library"), std::string::npos) << msg;
+}
+
+TEST(PluginLoader, EnvironmentNamingAPluginFileLoadsIt) {
+    const std::filesystem::path file = std::filesystem::path(TESSERA_PLUGIN_DIR) / PluginLoader::moduleFileName("null");
+    setenv("TESSERA_PLUGIN_DIR", file.c_str(), 1);
+    PluginLoader loader;
+    unsetenv("TESSERA_PLUGIN_DIR");
+    BackendRegistry registry;
+    auto status = loader.loadBackend("null", registry);
+    ASSERT_TRUE(status.ok()) << status.error().message;
+    EXPECT_TRUE(registry.contains("null"));
 }

@@ -4,7 +4,7 @@
 // combine's offsets and the memory figure.
 #include "tessera/character/BakedAnimation.h"
 #include "tessera/character/BakedVertices.h"
-#include <CompressedVertex.h>
+#include "tessera/shaders/CompressedVertex.h"
 #include "tessera/character/Pose.h"
 #include "tessera/character/SkinnedVertex.h"
 

@@ -4,7 +4,7 @@
 #include "tessera/character/CompressionError.h"
 #include "tessera/core/Random.h"
 
-#include "CompressedVertex.h"
+#include "tessera/shaders/CompressedVertex.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include "tessera/terrain/CraterSplat.h"
 #include "tessera/terrain/Terrain.h"
 
-#include "CraterProfile.h"
+#include "tessera/shaders/CraterProfile.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 
 #include "tessera/terrain/PatchGrid.h"
 
-#include "TerrainPatches.h"
+#include "tessera/shaders/TerrainPatches.h"
 
 #include <gtest/gtest.h>
 

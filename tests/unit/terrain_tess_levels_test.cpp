@@ -4,7 +4,7 @@
 #include "tessera/terrain/Terrain.h"
 #include "tessera/terrain/TessLevels.h"
 
-#include "TessFactors.h"
+#include "tessera/shaders/TessFactors.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 
 #include "tessera/terrain/TessellationSettings.h"
 
-#include "TessFactors.h"
+#include "tessera/shaders/TessFactors.h"
 
 #include <gtest/gtest.h>
 

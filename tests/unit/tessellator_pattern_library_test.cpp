@@ -3,7 +3,7 @@
 // with the shaders' own code (TessPattern.h compiled as C++) must give
 // exactly Tessellator's triangles, which the GPU tests show are the
 // hardware's.
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 #include "tessera/tessellator/PatternLibrary.h"
 #include "tessera/tessellator/Tessellator.h"
 

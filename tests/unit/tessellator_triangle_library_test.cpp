@@ -4,7 +4,7 @@
 // (TessTrianglePattern.h compiled as C++) must give exactly Tessellator's
 // points and triangles for that level, which the GPU tests show are the
 // hardware's.
-#include "TessTrianglePattern.h"
+#include "tessera/shaders/TessTrianglePattern.h"
 #include "tessera/core/Random.h"
 #include "tessera/tessellator/ContinuousLevel.h"
 #include "tessera/tessellator/Tessellator.h"

@@ -10,7 +10,7 @@
 #include "common_frame.glsl"
 #include "subdiv_eval.glsl"
 #include "subdiv_varyings.glsl"
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 
 layout(set = 0, binding = TS_BINDING_EMU_RECORDS) uniform samplerBuffer records;
 layout(push_constant) uniform EmulatedDraw {

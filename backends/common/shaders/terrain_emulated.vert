@@ -9,7 +9,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "common_frame.glsl"
 #include "terrain_heightmap.glsl"
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 
 layout(set = 0, binding = TS_BINDING_EMU_RECORDS) uniform samplerBuffer records;
 layout(push_constant) uniform EmulatedDraw {

@@ -6,7 +6,7 @@
 // the new one written as exact integers, with no UNORM conversion whose
 // rounding could differ from the CPU's.
 #extension GL_GOOGLE_include_directive : require
-#include "CraterProfile.h"
+#include "tessera/shaders/CraterProfile.h"
 
 layout(set = 0, binding = 0) uniform usampler2D oldHeights;
 layout(push_constant) uniform SplatBlock {

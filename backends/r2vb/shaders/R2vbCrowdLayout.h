@@ -27,7 +27,7 @@
 //              vertex v.
 #ifndef TESSERA_R2VB_CROWD_LAYOUT_H
 #define TESSERA_R2VB_CROWD_LAYOUT_H
-#include "SharedTypes.h"
+#include "tessera/shaders/SharedTypes.h"
 
 /// The LOD state target a pass reads (last frame's, or this frame's).
 #define R2VB_CROWD_BINDING_STATE 24

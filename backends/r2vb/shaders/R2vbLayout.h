@@ -16,7 +16,7 @@
 // Here `slot` is the patch's position in the frame's visible-patch list.
 #ifndef TESSERA_R2VB_LAYOUT_H
 #define TESSERA_R2VB_LAYOUT_H
-#include "SharedTypes.h"
+#include "tessera/shaders/SharedTypes.h"
 
 /// Width of the cage and factor targets: a multiple of 4, so a slot's four
 /// texels always share a row.

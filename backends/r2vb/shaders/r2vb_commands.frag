@@ -2,7 +2,7 @@
 // Pass r2vb.commands: writes the record's two texels and its five
 // tessellator commands to seven render targets at once (MRT).
 #extension GL_GOOGLE_include_directive : require
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 
 layout(location = 0) flat in vec4 inOuter;
 layout(location = 1) flat in vec4 inInner;

@@ -7,7 +7,7 @@
 // TS_CROWD_TEXELS defined) included first.
 #ifndef R2VB_CROWD_GLSL
 #define R2VB_CROWD_GLSL
-#include "CrowdInstance.h"
+#include "tessera/shaders/CrowdInstance.h"
 #include "R2vbCrowdLayout.h"
 
 layout(push_constant) uniform R2vbCrowdPush {

@@ -13,7 +13,7 @@
 #define TS_NO_LEVEL_BUFFERS
 #include "terrain_tess.glsl"
 #include "terrain_metric.glsl"
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 #include "r2vb_points.glsl"
 
 layout(set = 0, binding = R2VB_BINDING_CAGE) uniform sampler2D cage;

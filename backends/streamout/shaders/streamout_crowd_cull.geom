@@ -7,7 +7,7 @@
 // (a stream query counts them for the bin pass's draws), and the rasterizer writes its next state into the id's texel
 // (streamout_crowd_state.frag).
 #extension GL_GOOGLE_include_directive : require
-#include "CrowdLod.h"
+#include "tessera/shaders/CrowdLod.h"
 
 layout(points) in;
 layout(points, max_vertices = 1) out;

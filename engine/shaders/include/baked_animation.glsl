@@ -13,7 +13,7 @@
 // generated creatures.
 #ifndef BAKED_ANIMATION_GLSL
 #define BAKED_ANIMATION_GLSL
-#include "BakedAnimation.h"
+#include "tessera/shaders/BakedAnimation.h"
 
 // Row r of a baked matrix from its three texels to a mat4 (GLSL's mat4 takes
 // columns; the fourth row of an affine matrix is (0, 0, 0, 1)).

@@ -5,8 +5,8 @@
 // tsSkinCageVertex for each corner of each tessellated vertex.
 #ifndef CHARACTER_COMMON_GLSL
 #define CHARACTER_COMMON_GLSL
-#include "CharacterUniforms.h"
-#include "CompressedVertex.h"
+#include "tessera/shaders/CharacterUniforms.h"
+#include "tessera/shaders/CompressedVertex.h"
 
 #ifdef TS_CROWD
 // Instanced crowd draws: uCharacter is filled per invocation from the

@@ -6,8 +6,8 @@
 // when TS_CROWD is defined.
 #ifndef CROWD_COMMON_GLSL
 #define CROWD_COMMON_GLSL
-#include "CharacterUniforms.h"
-#include "CrowdInstance.h"
+#include "tessera/shaders/CharacterUniforms.h"
+#include "tessera/shaders/CrowdInstance.h"
 #include "baked_animation.glsl"
 
 #ifndef TS_CROWD_LISTS_ACCESS

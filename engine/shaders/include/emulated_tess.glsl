@@ -5,7 +5,7 @@
 // draws them all with one indirect multi-draw.
 #ifndef EMULATED_TESS_GLSL
 #define EMULATED_TESS_GLSL
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 
 layout(std140, set = 0, binding = TS_BINDING_EMU_KEYS) uniform EmuKeys {
     TsEmuKeyTable tsEmuKeys;

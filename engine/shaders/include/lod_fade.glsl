@@ -8,7 +8,7 @@
 // share moves from one to the other frame by frame.
 #ifndef LOD_FADE_GLSL
 #define LOD_FADE_GLSL
-#include "CrowdLod.h"
+#include "tessera/shaders/CrowdLod.h"
 
 // 4x4 Bayer matrix thresholds, (rank + 0.5) / 16.
 float tsLodDitherThreshold(vec2 fragCoord) {

@@ -18,8 +18,8 @@
 // owner's only by rounding and the end caps' approximation.
 #ifndef SUBDIV_EVAL_GLSL
 #define SUBDIV_EVAL_GLSL
-#include "SubdivLayout.h"
-#include "DisplacementTile.h"
+#include "tessera/shaders/SubdivLayout.h"
+#include "tessera/shaders/DisplacementTile.h"
 #include "subdiv_patch.glsl"
 
 layout(std140, set = 0, binding = TS_BINDING_SUBDIV_UNIFORMS) uniform SubdivBlock {

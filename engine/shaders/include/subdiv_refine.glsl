@@ -5,7 +5,7 @@
 // produce the same control points from the same data.
 #ifndef SUBDIV_REFINE_GLSL
 #define SUBDIV_REFINE_GLSL
-#include "SubdivLayout.h"
+#include "tessera/shaders/SubdivLayout.h"
 
 layout(set = 0, binding = TS_BINDING_SUBDIV_STENCILS) uniform usamplerBuffer subdivStencils;
 layout(set = 0, binding = TS_BINDING_SUBDIV_ENTRIES) uniform usamplerBuffer subdivEntries;

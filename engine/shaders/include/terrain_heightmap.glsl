@@ -6,7 +6,7 @@
 // CPU, so gameplay queries and shading agree.
 #ifndef TERRAIN_HEIGHTMAP_GLSL
 #define TERRAIN_HEIGHTMAP_GLSL
-#include "TerrainUniforms.h"
+#include "tessera/shaders/TerrainUniforms.h"
 
 layout(std140, set = 0, binding = TS_BINDING_TERRAIN) uniform TerrainBlock {
     TerrainUniforms terrain;

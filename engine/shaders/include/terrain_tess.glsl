@@ -3,8 +3,8 @@
 // stage reads. Define TS_LEVELS_WRITE before including to write them.
 #ifndef TERRAIN_TESS_GLSL
 #define TERRAIN_TESS_GLSL
-#include "TerrainPatches.h"
-#include "TessFactors.h"
+#include "tessera/shaders/TerrainPatches.h"
+#include "tessera/shaders/TessFactors.h"
 
 layout(std140, set = 0, binding = TS_BINDING_TESS) uniform TessBlock {
     TerrainTessUniforms tess;

@@ -3,7 +3,7 @@
 #include "tessera/character/SkinnedVertex.h"
 #include "tessera/core/ParallelFor.h"
 
-#include <CompressedVertex.h>
+#include "tessera/shaders/CompressedVertex.h"
 
 #include <cassert>
 

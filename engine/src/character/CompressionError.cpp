@@ -2,7 +2,7 @@
 
 #include "tessera/character/Pose.h"
 
-#include "CompressedVertex.h"
+#include "tessera/shaders/CompressedVertex.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "tessera/lod/LodPolicy.h"
 
-#include "CrowdLod.h"
+#include "tessera/shaders/CrowdLod.h"
 
 #include <cmath>
 #include <string>

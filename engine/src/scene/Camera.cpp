@@ -4,11 +4,6 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-// projection() relies on it; without it GLM silently emits OpenGL's -1..1 depth.
-#if !defined(GLM_FORCE_DEPTH_ZERO_TO_ONE)
-#error "tessera_core must be compiled with GLM_FORCE_DEPTH_ZERO_TO_ONE"
-#endif
-
 namespace tessera::scene {
 
 void Camera::setPose(const CameraPose& pose) {
@@ -54,9 +49,10 @@ glm::mat4 Camera::view() const {
 }
 
 glm::mat4 Camera::projection() const {
-    // Depth 0..1 comes from GLM_FORCE_DEPTH_ZERO_TO_ONE, a public definition
-    // of tessera_core, so every user of this header agrees on it.
-    glm::mat4 p = glm::perspective(mVerticalFov, mAspect, mNearPlane, mFarPlane);
+    // Vulkan's depth 0..1 by name (the _ZO variant), not by a GLM_FORCE_*
+    // definition: that would be a compile definition every game linking
+    // Tessera inherits, silently changing its own glm::perspective.
+    glm::mat4 p = glm::perspectiveRH_ZO(mVerticalFov, mAspect, mNearPlane, mFarPlane);
     p[1][1] *= -1.0f;
     return p;
 }

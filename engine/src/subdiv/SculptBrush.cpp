@@ -1,6 +1,6 @@
 #include "tessera/subdiv/SculptBrush.h"
 
-#include "DisplacementTile.h"
+#include "tessera/shaders/DisplacementTile.h"
 
 #include <algorithm>
 #include <limits>

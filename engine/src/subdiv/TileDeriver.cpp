@@ -1,6 +1,6 @@
 #include "TileDeriver.h"
 
-#include "DisplacementTile.h"
+#include "tessera/shaders/DisplacementTile.h"
 
 #include <algorithm>
 #include <cassert>

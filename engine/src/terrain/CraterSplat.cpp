@@ -1,6 +1,6 @@
 #include "tessera/terrain/CraterSplat.h"
 
-#include "CraterProfile.h"
+#include "tessera/shaders/CraterProfile.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "tessera/terrain/PatchGrid.h"
 
-#include "TerrainPatches.h"
+#include "tessera/shaders/TerrainPatches.h"
 
 #include <algorithm>
 #include <cassert>

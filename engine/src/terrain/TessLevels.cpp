@@ -2,8 +2,8 @@
 
 #include "tessera/terrain/Terrain.h"
 
-#include "TerrainPatches.h"
-#include "TessFactors.h"
+#include "tessera/shaders/TerrainPatches.h"
+#include "tessera/shaders/TessFactors.h"
 
 #include <algorithm>
 

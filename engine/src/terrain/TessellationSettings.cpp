@@ -1,6 +1,6 @@
 #include "tessera/terrain/TessellationSettings.h"
 
-#include "TessFactors.h"
+#include "tessera/shaders/TessFactors.h"
 
 namespace tessera::terrain {
 

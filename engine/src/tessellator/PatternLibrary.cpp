@@ -2,7 +2,7 @@
 
 #include "EdgeSpacing.h"
 #include "RowStitcher.h"
-#include "TessPattern.h"
+#include "tessera/shaders/TessPattern.h"
 
 #include <algorithm>
 #include <array>

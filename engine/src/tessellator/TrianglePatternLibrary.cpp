@@ -1,6 +1,6 @@
 #include "tessera/tessellator/TrianglePatternLibrary.h"
 
-#include "TessTrianglePattern.h"
+#include "tessera/shaders/TessTrianglePattern.h"
 #include "tessera/tessellator/ContinuousLevel.h"
 #include "tessera/tessellator/Tessellator.h"
 

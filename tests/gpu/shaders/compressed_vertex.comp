@@ -3,7 +3,7 @@
 // input as the skinning pass would, and unpacks the C++ packing of it as the
 // tessellation pass would (tests/gpu/compressed_vertex_test.cpp compares).
 #extension GL_GOOGLE_include_directive : require
-#include "CompressedVertex.h"
+#include "tessera/shaders/CompressedVertex.h"
 #include "../support/CompressedVertexTestLayout.h"
 
 layout(local_size_x = 64) in;

@@ -3,7 +3,7 @@
 // written once for both languages.
 #ifndef TESSERA_BAKED_ANIMATION_TEST_LAYOUT_H
 #define TESSERA_BAKED_ANIMATION_TEST_LAYOUT_H
-#include "SharedTypes.h"
+#include "tessera/shaders/SharedTypes.h"
 
 TS_NAMESPACE_BEGIN
 

@@ -3,7 +3,7 @@
 // shaders/compressed_vertex.comp), written once for both languages.
 #ifndef TESSERA_COMPRESSED_VERTEX_TEST_LAYOUT_H
 #define TESSERA_COMPRESSED_VERTEX_TEST_LAYOUT_H
-#include "SharedTypes.h"
+#include "tessera/shaders/SharedTypes.h"
 
 TS_NAMESPACE_BEGIN
 

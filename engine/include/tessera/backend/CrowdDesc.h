@@ -6,7 +6,7 @@
 /// the instances into LOD tiers on the GPU with its generation's technique
 /// and draws each tier instanced (docs/CROWD.md, section 6).
 
-#include "CrowdInstance.h"
+#include "tessera/shaders/CrowdInstance.h"
 #include "tessera/backend/Handles.h"
 
 #include <array>

@@ -9,7 +9,7 @@
 /// tessellates the domains with its tessellator and evaluates them with the
 /// shared subdiv_eval.glsl (docs/SUBDIV.md).
 
-#include "SubdivLayout.h"
+#include "tessera/shaders/SubdivLayout.h"
 #include "tessera/backend/Handles.h"
 
 #include <cstdint>

@@ -5,14 +5,14 @@
 /// animated instances needs no per-agent palette on the CPU. Each instance
 /// carries (clip, phase); the GPU fetches the two baked frames around the
 /// phase and blends them (engine/shaders/include/baked_animation.glsl).
-/// Layout: engine/shaders/shared/BakedAnimation.h. docs/CHARACTERS.md,
+/// Layout: engine/include/tessera/shaders/BakedAnimation.h. docs/CHARACTERS.md,
 /// "Baked animation for crowds", has the memory and error figures.
 
 #include "tessera/character/CharacterAsset.h"
 
-// The layout shared with GLSL (engine/shaders/shared/BakedAnimation.h). Angle
+// The layout shared with GLSL (engine/include/tessera/shaders/BakedAnimation.h). Angle
 // brackets: a quoted name would find this very file first.
-#include <BakedAnimation.h>
+#include "tessera/shaders/BakedAnimation.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -3,7 +3,7 @@
 /// The LOD manager's answer for one frame: the parameters every backend's
 /// GPU selection reads, and the CPU reference's per-tier instance lists.
 
-#include "CrowdLod.h"
+#include "tessera/shaders/CrowdLod.h"
 
 #include <array>
 #include <cstdint>

@@ -2,7 +2,7 @@
 /// @file LodInstance.h
 /// What the LOD manager reads per instance, per character and per view.
 
-#include "CrowdLod.h"
+#include "tessera/shaders/CrowdLod.h"
 #include "tessera/scene/Camera.h"
 
 #include <cstdint>

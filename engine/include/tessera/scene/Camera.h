@@ -17,7 +17,7 @@ namespace tessera::scene {
 /// clamped, and the view stays well defined even straight up or down because
 /// it is built from rotations rather than lookAt().
 ///
-/// projection() maps depth to 0..1 (GLM_FORCE_DEPTH_ZERO_TO_ONE) and flips Y,
+/// projection() maps depth to 0..1 (Vulkan's convention, glm::perspectiveRH_ZO) and flips Y,
 /// because Vulkan's viewport has +Y pointing down: with the flip, world +Y is
 /// up on screen without a negative-height viewport. Consequently a point above
 /// the view centre has NEGATIVE NDC y.

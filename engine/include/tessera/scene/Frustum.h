@@ -26,7 +26,7 @@ public:
 
     /// Extracts the planes from a view-projection matrix (Gribb and Hartmann,
     /// 2001) for Vulkan clip space, where visible points satisfy -w <= x <= w,
-    /// -w <= y <= w and 0 <= z <= w (GLM_FORCE_DEPTH_ZERO_TO_ONE). Works for
+    /// -w <= y <= w and 0 <= z <= w (Vulkan's convention, glm::perspectiveRH_ZO). Works for
     /// any projection, perspective or orthographic, including a Y flip.
     static Frustum fromViewProjection(const glm::mat4& viewProj);
 

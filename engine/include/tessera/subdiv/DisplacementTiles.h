@@ -4,7 +4,7 @@
 /// per ptex face a biquadratic B-spline D over [0, 1]^2, its coefficients
 /// with a one-texel overlap, a mip pyramid, all tiles packed into one float
 /// texture, and a 16-byte record per tile or patch; exactly the arrays a
-/// shader reads (layout and lookup in shaders/shared/DisplacementTile.h,
+/// shader reads (layout and lookup in tessera/shaders/DisplacementTile.h,
 /// which the evaluation here runs too). docs/SUBDIV.md, "Tiles", has the
 /// figures.
 ///
@@ -37,7 +37,7 @@
 #include "tessera/subdiv/PatchData.h"
 #include "tessera/subdiv/PtexTopology.h"
 
-#include "DisplacementTile.h"
+#include "tessera/shaders/DisplacementTile.h"
 
 #include <cstdint>
 #include <span>

@@ -7,7 +7,7 @@
 /// their owners for watertight edges (SubdivDomains). Plain data: a backend
 /// uploads it as is, and nothing here depends on OpenSubdiv or the device.
 
-#include "SubdivLayout.h"
+#include "tessera/shaders/SubdivLayout.h"
 #include "tessera/core/Result.h"
 #include "tessera/scene/Aabb.h"
 #include "tessera/subdiv/ObjShape.h"

@@ -7,7 +7,7 @@
 /// the frame's triangle budget by scaling every level down, so no view of a
 /// large or close model costs more than the budget allows.
 
-#include "SubdivLayout.h"
+#include "tessera/shaders/SubdivLayout.h"
 #include "tessera/scene/Frustum.h"
 #include "tessera/subdiv/SubdivGpuMesh.h"
 

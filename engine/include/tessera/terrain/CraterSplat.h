@@ -10,7 +10,7 @@
 
 namespace tessera::terrain {
 
-/// Shape of a crater; see tsCraterOffset in engine/shaders/shared/CraterProfile.h.
+/// Shape of a crater; see tsCraterOffset in engine/include/tessera/shaders/CraterProfile.h.
 struct CraterProfile {
     float depth = 14.0f;     ///< metres below the old ground at the centre
     float rimHeight = 4.0f;  ///< metres above the old ground at the rim

@@ -15,7 +15,7 @@
 namespace tessera::terrain {
 
 /// Geometry and numbering of the control mesh, identical to the shaders'
-/// (engine/shaders/shared/TerrainPatches.h, which this class calls):
+/// (engine/include/tessera/shaders/TerrainPatches.h, which this class calls):
 /// patch (x, z) has index z * P + x and covers world X in
 /// [x, x+1] * patchSize().x and Z in [z, z+1] * patchSize().y. Each edge is
 /// numbered once, in a canonical direction, so neighbours share its

@@ -17,7 +17,7 @@ enum class TerrainMode : uint32_t {
 };
 
 /// Per-edge metric of the adaptive mode (values match TS_METRIC_* in
-/// engine/shaders/shared/TessFactors.h, where the formulas live).
+/// engine/include/tessera/shaders/TessFactors.h, where the formulas live).
 enum class TessMetric : uint32_t {
     ScreenEdge = 0,   ///< projected edge length against a pixel target
     Distance = 1,     ///< distance to the camera (paper, Listing 15)

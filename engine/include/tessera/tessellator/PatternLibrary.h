@@ -5,7 +5,7 @@
 /// 1 to 14.99), as lists of point references, built once from the same
 /// stitching code as Tessellator. The r2vb and streamout backends upload it
 /// as their pattern buffer and key table; their shaders select a piece per
-/// patch edge and place its points (engine/shaders/shared/TessPattern.h
+/// patch edge and place its points (engine/include/tessera/shaders/TessPattern.h
 /// defines the keys and references, shared with the shaders).
 
 #include <cstdint>

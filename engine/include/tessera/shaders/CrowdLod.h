@@ -1,0 +1,135 @@
+// CrowdLod.h: the crowd's level-of-detail selection, one definition for the
+// CPU reference (lod::LodManager, the null backend and the tests) and for the
+// backends' GPU culling and binning passes (a compute pass, a geometry
+// shader, a render-target pass), so every path sorts an instance into the
+// same tier from the same numbers.
+//
+// Per instance and frame (tsLodUpdate):
+//   1. frustum test of the instance's bounding sphere;
+//   2. its projected size in pixels (the sphere's diameter on screen);
+//   3. the tier it would take from the thresholds, with hysteresis: moving
+//      to a finer tier needs the threshold, moving back needs falling a
+//      hysteresis fraction below it, so an instance on a boundary does not
+//      flicker;
+//   4. the frame budget, which the CPU turns into pixel cuts and a level cap
+//      per frame (lod::LodManager): a near candidate below the near cut is
+//      drawn in the middle tier, a middle candidate below the middle cut in
+//      the far tier, a far one below the far cut not at all;
+//   5. the cross-fade: a tier change draws the instance in both tiers for
+//      `fadeFrames` frames with complementary dither masks.
+// The instance's state between frames is one uint (tier, previous tier,
+// fade frames left), kept per instance id by whoever runs the selection.
+#ifndef TESSERA_CROWD_LOD_H
+#define TESSERA_CROWD_LOD_H
+#include "tessera/shaders/SharedTypes.h"
+
+/// Tiers, finest first.
+#define TS_LOD_NEAR 0u   ///< tessellated and displaced (the two-pass path)
+#define TS_LOD_MIDDLE 1u ///< the cage, untessellated, with the normal map
+#define TS_LOD_FAR 2u    ///< the simplified far mesh
+#define TS_LOD_TIERS 3u
+/// State tier of an instance that was not in view last frame.
+#define TS_LOD_NONE 3u
+
+/// Most frames a cross-fade may last (the fade counter has 6 bits).
+#define TS_LOD_MAX_FADE_FRAMES 63u
+
+TS_NAMESPACE_BEGIN
+
+/// What the selection reads per frame (a uniform block on the GPU).
+struct CrowdLodParams {
+    vec4 planes[6];  // world frustum planes, normals inwards (scene::Frustum's order)
+    vec4 eye;        // xyz: camera position, w: pixels per radian (viewport height / (2 tan(fov / 2)))
+    vec4 thresholds; // x: near threshold (px), y: far threshold (px), z: hysteresis fraction, w: fade frames
+    vec4 cuts;       // x: near cut, y: middle cut, z: far cut (px), w: 1 = budget demotions fade
+    vec4 levels;     // x: level cap of the near tier, y: fixed level (0: from the size), zw: unused
+};
+TS_CHECK_SIZE(CrowdLodParams, 160)
+
+/// The state word: tier in bits 0..1, previous tier in bits 2..3, fade
+/// frames left in bits 4..9.
+TS_INLINE uint tsLodStateTier(uint state) { return state & 3u; }
+TS_INLINE uint tsLodStatePrevious(uint state) { return (state >> 2u) & 3u; }
+TS_INLINE uint tsLodStateFade(uint state) { return (state >> 4u) & 63u; }
+TS_INLINE uint tsLodState(uint tier, uint previous, uint fade) { return tier | (previous << 2u) | (fade << 4u); }
+/// The state of an instance never seen (or out of view last frame).
+TS_INLINE uint tsLodStateNone() { return tsLodState(TS_LOD_NONE, TS_LOD_NONE, 0u); }
+
+/// Whether the sphere (xyz centre, w radius) is at least partly inside.
+TS_INLINE bool tsLodInFrustum(vec4 sphere, CrowdLodParams p) {
+    bool inside = true;
+    for (uint i = 0u; i < 6u; ++i)
+        if (dot(vec3(p.planes[i].x, p.planes[i].y, p.planes[i].z), vec3(sphere.x, sphere.y, sphere.z)) +
+                p.planes[i].w < -sphere.w)
+            inside = false;
+    return inside;
+}
+
+/// The sphere's diameter on screen in pixels (its full height when the
+/// camera is inside it).
+TS_INLINE float tsLodPixels(vec4 sphere, CrowdLodParams p) {
+    const float distance = length(vec3(sphere.x, sphere.y, sphere.z) - vec3(p.eye.x, p.eye.y, p.eye.z));
+    return 2.0f * sphere.w * p.eye.w / max(distance, sphere.w);
+}
+
+/// The tier the thresholds give, with hysteresis against `previous` (the
+/// instance's tier last frame, or TS_LOD_NONE).
+TS_INLINE uint tsLodCandidate(float pixels, uint previous, CrowdLodParams p) {
+    const float keep = 1.0f - p.thresholds.z;
+    const bool wasNear = previous == TS_LOD_NEAR;
+    const bool wasFiner = previous <= TS_LOD_MIDDLE;
+    if (pixels >= p.thresholds.x || (wasNear && pixels >= p.thresholds.x * keep)) return TS_LOD_NEAR;
+    if (pixels >= p.thresholds.y || (wasFiner && pixels >= p.thresholds.y * keep)) return TS_LOD_MIDDLE;
+    return TS_LOD_FAR;
+}
+
+/// The tier after the budget's cuts (TS_LOD_NONE: dropped, the far tier
+/// being full).
+TS_INLINE uint tsLodTier(float pixels, uint candidate, CrowdLodParams p) {
+    if (candidate == TS_LOD_NEAR && pixels >= p.cuts.x) return TS_LOD_NEAR;
+    if (candidate <= TS_LOD_MIDDLE && pixels >= p.cuts.y) return TS_LOD_MIDDLE;
+    if (pixels >= p.cuts.z) return TS_LOD_FAR;
+    return TS_LOD_NONE;
+}
+
+/// The next state of an instance (`state`: last frame's). Out of view: none.
+/// Coming into view: its tier at once (nothing on screen to fade from). A
+/// change of tier starts a fade; a demotion by the budget fades only when the
+/// budget leaves room for the fading copy (cuts.w).
+TS_INLINE uint tsLodUpdate(uint state, vec4 sphere, CrowdLodParams p) {
+    if (!tsLodInFrustum(sphere, p)) return tsLodStateNone();
+    const uint last = tsLodStateTier(state);
+    const float pixels = tsLodPixels(sphere, p);
+    const uint candidate = tsLodCandidate(pixels, last, p);
+    const uint tier = tsLodTier(pixels, candidate, p);
+    if (tier == TS_LOD_NONE) return tsLodStateNone();
+    if (last == TS_LOD_NONE) return tsLodState(tier, tier, 0u);
+    const uint fadeFrames = uint(p.thresholds.w);
+    if (tier != last) {
+        const bool byBudget = tier != candidate;
+        const uint fade = (byBudget && p.cuts.w == 0.0f) ? 0u : fadeFrames;
+        return tsLodState(tier, last, fade);
+    }
+    const uint fade = tsLodStateFade(state);
+    return tsLodState(tier, tsLodStatePrevious(state), fade > 0u ? fade - 1u : 0u);
+}
+
+/// How much of the instance its tier draws, in (0, 1]: the fade's progress
+/// (the previous tier draws the rest, 1 - coverage).
+TS_INLINE float tsLodCoverage(uint state, CrowdLodParams p) {
+    const uint fade = tsLodStateFade(state);
+    if (fade == 0u) return 1.0f;
+    return 1.0f - float(fade) / (p.thresholds.w + 1.0f);
+}
+
+/// The tessellation level of a near instance: its size on screen times the
+/// character's levels per pixel (or the fixed level), within [1, the
+/// frame's cap].
+TS_INLINE float tsLodLevel(float pixels, float levelPerPixel, CrowdLodParams p) {
+    const float level = p.levels.y > 0.0f ? p.levels.y : pixels * levelPerPixel;
+    return clamp(level, 1.0f, p.levels.x);
+}
+
+TS_NAMESPACE_END
+
+#endif

@@ -1,0 +1,22 @@
+// FrameUniforms.h: per-frame constants every pass reads (set 0, binding 0).
+#ifndef TESSERA_FRAME_UNIFORMS_H
+#define TESSERA_FRAME_UNIFORMS_H
+#include "tessera/shaders/SharedTypes.h"
+
+TS_NAMESPACE_BEGIN
+
+struct FrameUniforms {
+    mat4 viewProjection;
+    mat4 view;
+    vec4 cameraPosition; // xyz: world position, w: time in seconds
+    vec4 sunDirection;   // xyz: unit vector towards the sun, w: unused
+    vec4 fogColor;       // rgb: horizon colour (the clear colour), a: fog density per metre
+    vec4 viewport;       // x: width, y: height, z: 1/width, w: 1/height (pixels)
+};
+TS_CHECK_SIZE(FrameUniforms, 192)
+
+TS_NAMESPACE_END
+
+#define TS_BINDING_FRAME 0
+
+#endif

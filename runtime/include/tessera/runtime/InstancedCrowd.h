@@ -1,0 +1,68 @@
+#pragma once
+/// @file InstancedCrowd.h
+/// The crowd scene drawn as one instanced crowd (Backend::drawCrowd): the
+/// creatures' clips baked once, every agent an instance each frame, and the
+/// LOD manager's parameters (its budget's cuts) for the backend's GPU
+/// culling and binning. No palette or pose per agent on the CPU.
+
+#include "tessera/runtime/CharacterAssets.h"
+#include "tessera/backend/CrowdDesc.h"
+#include "tessera/character/BakedAnimation.h"
+#include "tessera/character/FarMesh.h"
+#include "tessera/core/Result.h"
+#include "tessera/lod/LodManager.h"
+#include "tessera/scene/Camera.h"
+
+#include <memory>
+#include <vector>
+
+namespace tessera::runtime {
+
+class InstancedCrowd {
+public:
+    /// Bakes every asset's clips (character::bakeAnimation, combined). An
+    /// asset without a far mesh is an error naming its file.
+    static Result<std::unique_ptr<InstancedCrowd>> create(const CharacterAssets& assets);
+
+    /// What Backend::createCrowd needs (the assets' handles must be bound),
+    /// for up to `maxAgents` agents, with the policy's near slots and edge
+    /// target (the near tier's level per pixel, the same on CPU and GPU).
+    backend::CrowdDesc desc(const CharacterAssets& assets, uint32_t maxAgents, const lod::LodPolicy& policy);
+
+    /// The global baked clip of asset `asset`'s clip `clip` (-1: rest pose).
+    uint32_t bakedClip(uint32_t asset, int clip) const;
+    /// The phase `seconds` into global baked clip `clip` (character::bakedPhase).
+    float phase(uint32_t clip, float seconds) const { return character::bakedPhase(mBaked.clips[clip], seconds); }
+
+    /// Starts a frame of `count` instances (set each with set()).
+    void begin(size_t count);
+    /// Instance `i` of the frame (CrowdInstance.h) and its LOD sphere; safe
+    /// to call for different `i` from several threads.
+    void set(size_t i, const shader::CrowdInstance& instance);
+    /// Runs the LOD manager over the frame's instances (the CPU reference:
+    /// the budget's cuts reach the GPU in the draw's parameters).
+    const lod::LodFrame& select(const lod::LodView& view, const lod::LodPolicy& policy);
+    /// The frame's draw for the backend.
+    backend::CrowdDrawInfo drawInfo(bool displacement, bool lodColors) const;
+
+    const lod::LodFrame& lod() const { return mLod.frame(); }
+    /// Writes `gpu` (a backend's lists, instance indices) and the CPU
+    /// reference's last lists as agent ids per tier, sorted, to `path`
+    /// (--crowd-tiers); an error naming the file when it cannot.
+    Status writeTiers(const std::string& path, const std::string& backend, const backend::CrowdTiers& gpu) const;
+    size_t instanceCount() const { return mInstances.size(); }
+
+private:
+    InstancedCrowd() = default;
+
+    character::BakedAnimation mBaked;
+    std::vector<lod::LodCharacter> mCosts;
+    std::vector<backend::CrowdCharacterDesc> mCharacters;
+    std::vector<const character::CageMesh*> mFarMeshes;
+    std::vector<character::CageMesh> mSimplifiedFar; ///< reserved: mFarMeshes point into it
+    lod::LodManager mLod;
+    std::vector<shader::CrowdInstance> mInstances;
+    std::vector<lod::LodInstance> mLodInstances;
+};
+
+} // namespace tessera::runtime

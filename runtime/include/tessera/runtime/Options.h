@@ -1,0 +1,149 @@
+#pragma once
+/// @file Options.h
+/// Everything a run of the runtime is told: backend and device, the scene
+/// (terrain, characters, crowd, subdivision surfaces), level of detail,
+/// outputs and benchmarks. Plain data with working defaults: a game fills in
+/// what it needs; tessera-demo fills it from its command line (each field
+/// names its flag, documented in `tessera-demo --help`).
+
+#include "tessera/backend/CharacterDesc.h"
+#include "tessera/core/Result.h"
+#include "tessera/scene/CameraPose.h"
+#include "tessera/terrain/CraterSplat.h"
+#include "tessera/terrain/TessellationSettings.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace tessera::runtime {
+
+/// How --model .obj files (Catmull-Clark surfaces with analytic
+/// displacement, docs/SUBDIV.md) are drawn.
+struct SubdivOptions {
+    uint32_t normals = 0;               ///< --normals approximate (0) | accurate (1): TS_SUBDIV_NORMALS_*
+    std::optional<float> level;         ///< --subdiv-level L: one level everywhere (measurements)
+    std::optional<float> levelEnd;      ///< --subdiv-level A:B: the level swept from A to B over the run
+    std::optional<float> pixels;        ///< --subdiv-pixels PX: target pixels per tessellated segment
+    uint32_t view = 0;                  ///< --subdiv-view shaded|patches|levels|mips: TS_SUBDIV_VIEW_*
+    bool mips = true;                   ///< --no-mips: sample the finest displacement level everywhere
+    std::optional<uint64_t> budget;     ///< --subdiv-budget T: tessellated triangles per frame, all surfaces
+    float amplitude = 0.02f;            ///< --subdiv-amplitude A: procedural displacement, fraction of the diagonal
+    bool animate = true;                ///< --subdiv-still: the cages keep their rest pose
+    int sculpt = 0;                     ///< --sculpt raise|lower: +1 / -1, a scripted stroke, one dab a frame
+};
+
+/// Meteor impacts over a crowd-scene run when --meteors is not given.
+inline constexpr uint32_t kCrowdSceneMeteors = 4;
+
+struct Options {
+    std::string backend;                ///< empty: best backend the device runs; "all" (--bench only): every GPU backend
+    std::string device;                 ///< --device NAME|INDEX
+    std::vector<std::string> pluginDirs; ///< --plugin-dir (repeatable)
+    std::string contentDir;             ///< --content DIR
+    std::string heightmap;              ///< --heightmap FILE (8/16-bit gray PNG)
+    bool listBackends = false;
+    bool listDevices = false;
+    bool help = false;
+    bool validation = false;
+    bool window = false;
+    bool wireframe = false;
+    uint32_t width = 1280;
+    uint32_t height = 720;
+    bool sizeGiven = false;             ///< --width or --height was given (--bench crowd defaults to 1920x1080)
+    uint32_t frames = 0;                ///< 0: the mode's default
+    uint32_t warmup = 0;
+    bool warmupGiven = false;           ///< --warmup was given (--bench crowd-sim takes 0 as none)
+    uint32_t seed = 1;
+    glm::vec3 clearColor{0.55f, 0.68f, 0.85f};
+    std::optional<scene::CameraPose> camera; ///< --camera fixes the view
+    std::string screenshot;             ///< PNG of the last frame
+    std::string capture;                ///< Chrome trace JSON
+    std::string benchmark;              ///< benchmark JSON
+    std::string dumpHeights;            ///< --dump-heights PREFIX: PREFIX.gpu.png and PREFIX.cpu.png
+    /// --crowd-tiers FILE: the last frame's crowd agents per LOD tier as the
+    /// backend binned them and as the CPU reference did (JSON).
+    std::string crowdTiers;
+    std::string record;                 ///< --record DIR: every frame as DIR/frame_NNNN.png
+
+    /// --terrain-mode; unset: adaptive where the backend draws it, else lowres.
+    std::optional<terrain::TerrainMode> terrainMode;
+    /// --tess-metric, --tess-target, --tess-level, --tess-max, --tess-distance
+    /// (mode is filled in once the backend is known).
+    terrain::TessellationSettings tessellation;
+    bool tessMaxGiven = false;
+    bool tessLevelGiven = false;
+    bool tessTargetGiven = false;
+    bool tessMetricGiven = false;
+    uint32_t meteors = 0;                         ///< --meteors N (the crowd scene: kCrowdSceneMeteors unless given)
+    bool meteorsGiven = false;
+    std::vector<terrain::CraterSplat> splats;     ///< --splat x,z,radius[,depth], before the first frame
+
+    /// --scene terrain|characters|crowd. "terrain" is the flythrough over
+    /// the terrain alone. "characters" (the default when --model is given)
+    /// walks a crowd of generated creatures, CesiumMan and every --model on
+    /// the terrain, with the camera circling them. "crowd" (the default
+    /// otherwise, outside the benchmarks: the showcase) simulates --agents
+    /// agents under a meteor shower and draws them all as an instanced
+    /// crowd where the backend culls and bins crowds on the GPU, from a
+    /// flight over them (an orbit with --orbit-distance).
+    std::string scene = "terrain";
+    bool sceneGiven = false;
+    std::vector<std::string> models;    ///< --model FILE (repeatable): any .gltf or .glb
+    std::vector<std::string> surfaces;  ///< --model FILE.obj (repeatable): Catmull-Clark control meshes
+    SubdivOptions subdiv;
+    /// --character-surface planar|catmull-clark|both: the --model .glb
+    /// characters as planar cages, as Catmull-Clark surfaces with their
+    /// .cctiles displacement (SubdivCharacters), or both side by side.
+    std::string characterSurface = "planar";
+    uint32_t crowd = 6;                 ///< --crowd N: generated creatures (0: only the --model files, no CesiumMan)
+    /// --orbit-distance M: the camera circle's radius; unset: 5 m in the
+    /// characters scene, 30 m in the crowd scene.
+    std::optional<float> orbitDistance;
+    std::optional<float> orbitDistanceEnd; ///< --orbit-distance A:B: the dolly's end
+    bool displacement = true;           ///< --no-displacement draws the bare interpolated cage
+    bool terrain = true;                ///< --no-terrain: characters alone on the clear colour (crack tests, captures)
+    backend::CharacterPath characterPath = backend::CharacterPath::TwoPass; ///< --character-path
+    std::optional<float> characterLevel; ///< --character-level L; unset: from each character's size on screen
+    /// The LOD manager's policy over the device class's defaults
+    /// (lod::LodPolicy::forDevice): --lod-near PX, --lod-far PX (thresholds
+    /// in projected pixels), --lod-budget T (tessellated triangles per
+    /// frame), --lod-near-max N (tessellated instances per frame).
+    std::optional<float> lodNear, lodFar;
+    std::optional<uint64_t> lodBudget;
+    std::optional<uint32_t> lodNearMax;
+    std::optional<uint32_t> lodMiddleMax;      ///< --lod-middle-max N: untessellated cages per frame
+    std::optional<float> lodEdge;              ///< --lod-edge PX: the near tier's tessellated edge in pixels
+    std::optional<uint32_t> lodFade;           ///< --lod-fade N: cross-fade frames (0: instant)
+    std::optional<uint32_t> lodFarTriangles;   ///< --lod-far-triangles N: the far mesh's triangles at most
+    bool lodColors = false;             ///< --lod-colors: tint instances by LOD tier
+
+    /// --agents N (the crowd scene's agents; unset: 2000) or, with --bench
+    /// crowd or crowd-sim, a comma list of crowd sizes (unset:
+    /// 1000,10000,65000). Each from 1 to crowd::Crowd::kMaxAgents.
+    std::vector<uint32_t> agents;
+    uint32_t crowdDraw = 48;            ///< --crowd-draw K: agents drawn in the crowd scene, the nearest in view
+    uint32_t threads = 0;               ///< --threads N: the crowd's threads (0: every hardware thread)
+    uint32_t steps = 0;                 ///< --steps N: --bench crowd-sim's measured steps (0: its default)
+
+    /// --bench terrain (the Table 2 benchmark), characters (two-pass vs
+    /// single-pass, amplification, Table 1, compression error), crowd (the
+    /// instanced crowd's GPU passes, frame times, tiers and memory per crowd
+    /// size and backend) or crowd-sim (the crowd simulation's step time,
+    /// memory and behaviour; no GPU) instead of the flythrough.
+    std::string bench;
+    std::string benchOut;               ///< --out FILE (default: stdout)
+    /// --out-dir DIR: where --bench writes one Chrome trace per backend
+    /// (bench-<backend>.json). With --backend all they are written anyway:
+    /// next to --out, else in the current directory.
+    std::string benchOutDir;
+};
+
+/// A number as a user writes it on the command line ("14.99", "20"), for
+/// messages about flags.
+std::string formatNumber(double value);
+
+} // namespace tessera::runtime

@@ -1,0 +1,113 @@
+#pragma once
+/// @file SimulatedCrowd.h
+/// The crowd scene's population: thousands of agents of the crowd simulation
+/// (crowd::Crowd) wandering between goals on the terrain, of which the
+/// nearest in view are drawn as the generated creatures through the
+/// character path (one draw each), until instanced crowd rendering lands.
+
+#include "tessera/runtime/CameraOrbit.h"
+#include "tessera/runtime/CharacterAssets.h"
+#include "tessera/runtime/CharacterPopulation.h"
+#include "tessera/runtime/CharacterPoser.h"
+#include "tessera/runtime/CrowdGait.h"
+#include "tessera/runtime/Options.h"
+#include "tessera/core/Result.h"
+#include "tessera/crowd/Crowd.h"
+#include "tessera/scene/CameraPath.h"
+#include "tessera/crowd/CrowdLayout.h"
+#include "tessera/terrain/Terrain.h"
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tessera::runtime {
+
+class SimulatedCrowd final : public CharacterPopulation {
+public:
+    static constexpr uint32_t kDefaultAgents = 2000;
+    /// The creatures stand about this tall on average (metres): goblin-sized.
+    static constexpr float kCreatureHeight = 1.4f;
+
+    /// Loads the generated creatures, measures their walk (CrowdGait), plans
+    /// the layout on `terrain` and creates the crowd of --agents agents
+    /// (--threads). Errors: too many agents for the machine, a terrain
+    /// without room for them (planCrowdLayout's), a creature that cannot be
+    /// used. The terrain must outlive the crowd.
+    static Result<std::unique_ptr<SimulatedCrowd>> create(const Options& options, const terrain::Terrain& terrain);
+
+    /// One simulation step (crowd::Crowd::step, the demo's 1/30 s), traced as
+    /// "crowd.step", and the trace's crowd counters.
+    void step();
+    const crowd::Crowd& crowd() const { return *mCrowd; }
+    const crowd::CrowdLayout& layout() const { return mLayout; }
+    /// What the run did, in one line: steps, agents walking, fleeing and
+    /// stuck, arrivals, mean step time.
+    std::string summary() const;
+    /// How the crowd is drawn on `backend` (`gpu`: one that needs a GPU), in one line.
+    std::string drawingMode(const std::string& backend, bool gpu) const;
+
+    CharacterAssets& assets() override { return mAssets; }
+    /// Instanced (useInstancedCrowd): every agent an instance, tiers by the
+    /// LOD manager. Otherwise the --crowd-draw agents nearest the camera
+    /// among those in view, through the character path.
+    void update(double seconds, const scene::Camera& camera, const CharacterLevels& levels) override;
+    InstancedCrowd* instancedCrowd() override { return mInstanced.get(); }
+    void useInstancedCrowd() override { mInstancedActive = mInstanced != nullptr; }
+    uint32_t instanceCapacity() const override { return mCrowd->stats().agents; }
+    std::span<const backend::CharacterDrawItem> items() const override { return mPoser.items(); }
+    /// Circling the spawn's centre (--orbit-distance, default 30 m), high
+    /// enough to look over the agents.
+    /// The scene's camera: a flight over the crowd (a seeded loop inside
+    /// the spawn disc, low enough that the nearest agents are tessellated),
+    /// or with --orbit-distance a circle around the spawn's centre.
+    void dollyOrbit(float endDistance, double seconds) override {
+        mOrbit.endDistance = endDistance;
+        mOrbit.dollySeconds = seconds;
+    }
+    scene::CameraPose orbitPose(double seconds) const override;
+    /// The crowd seen across, as someone at its edge would: from just
+    /// outside the spawn disc on the sun's side, a few metres up (higher for
+    /// a larger disc), looking at its centre, so the nearest agents are
+    /// tessellated and the far side is in the far tier (the crowd
+    /// benchmark's view).
+    scene::CameraPose acrossPose() const;
+
+private:
+    /// Where an agent's creature can reach at any heading and pose, at the
+    /// gait's stride radius: horizontally and from its feet up (metres).
+    struct Reach {
+        float radius = 0.0f, bottom = 0.0f, top = 0.0f;
+    };
+
+    SimulatedCrowd() = default;
+    /// The crowd's settings for the gait (stride, idle cycle, flow speed) and
+    /// boxes tall enough for the tallest creature; fills mReach.
+    crowd::CrowdSettings settings(uint32_t threads);
+    /// Radii around the gait's stride radius, speeds around its natural speed.
+    crowd::SpawnPattern spawnPattern(uint32_t seed) const;
+    glm::mat4 agentWorld(uint32_t agent, uint32_t creature) const;
+    /// Every agent as an instance of the instanced crowd, and its LOD selection.
+    void updateInstances(const scene::Camera& camera, const CharacterLevels& levels);
+
+    const terrain::Terrain* mTerrain = nullptr;
+    CharacterAssets mAssets;
+    CharacterPoser mPoser;
+    CrowdGait mGait;
+    std::vector<Reach> mReach;
+    crowd::CrowdLayout mLayout;
+    std::unique_ptr<crowd::Crowd> mCrowd;
+    std::unique_ptr<InstancedCrowd> mInstanced;
+    bool mInstancedActive = false;
+    CameraOrbit mOrbit;
+    std::optional<scene::CameraPath> mFlight; ///< unless --orbit-distance
+    uint32_t mDrawCount = 0;
+    double mStepMs = 0.0; ///< summed over every step
+    std::vector<uint32_t> mCulled;
+    std::vector<std::pair<float, uint32_t>> mNearest; ///< squared distance, agent
+};
+
+} // namespace tessera::runtime

@@ -1,0 +1,138 @@
+#include "tessera/runtime/InstancedCrowd.h"
+
+#include "tessera/core/JsonWriter.h"
+#include "tessera/profiler/CpuScope.h"
+
+#include <algorithm>
+#include <fstream>
+
+namespace tessera::runtime {
+
+Result<std::unique_ptr<InstancedCrowd>> InstancedCrowd::create(const CharacterAssets& assets) {
+    TESSERA_CPU_SCOPE("load.crowdBake");
+    std::unique_ptr<InstancedCrowd> crowd(new InstancedCrowd());
+    std::vector<character::BakedAnimation> parts;
+    for (const CrowdAsset& asset : assets.all()) {
+        if (!asset.asset.farMesh)
+            return Error{asset.file + ": no far mesh for the crowd's far tier (the loader makes one for every glTF)"};
+        parts.push_back(character::bakeAnimation(asset.asset));
+    }
+    crowd->mBaked = character::combine(parts);
+    return crowd;
+}
+
+backend::CrowdDesc InstancedCrowd::desc(const CharacterAssets& assets, uint32_t maxAgents,
+                                        const lod::LodPolicy& policy) {
+    mCharacters.clear();
+    mCosts.clear();
+    mFarMeshes.clear();
+    mSimplifiedFar.clear();
+    mSimplifiedFar.reserve(assets.size());
+    for (size_t i = 0; i < assets.size(); ++i) {
+        // The policy may want a coarser far mesh than the content's (a CPU
+        // rasterizer pays for every far triangle): simplified once, here.
+        const character::CageMesh& far = *assets[i].asset.farMesh;
+        if (policy.farMeshTriangles > 0 && far.triangleCount() > policy.farMeshTriangles) {
+            auto coarser = character::simplifyCage(far, {policy.farMeshTriangles});
+            if (coarser) {
+                mSimplifiedFar.push_back(std::move(coarser.value().mesh));
+                mFarMeshes.push_back(&mSimplifiedFar.back());
+                continue;
+            }
+        }
+        mFarMeshes.push_back(&far);
+    }
+    for (size_t i = 0; i < assets.size(); ++i) {
+        const CrowdAsset& asset = assets[i];
+        // The instance's sphere is the box's around its centre: levels per
+        // pixel of that sphere give an edge of about targetEdgePixels.
+        const float radius = std::max(glm::length(asset.box.extents()), 1e-6f);
+        lod::LodCharacter cost;
+        cost.levelPerPixel = lod::LodCharacter::levelPerPixelFor(asset.meanEdge, radius, policy.targetEdgePixels);
+        cost.cageTriangles = asset.asset.cage.triangleCount();
+        cost.farTriangles = mFarMeshes[i]->triangleCount();
+        mCosts.push_back(cost);
+        mCharacters.push_back({assets.handle(i), &asset.asset.cage, mFarMeshes[i], cost.levelPerPixel});
+    }
+    const uint32_t nearSlots = policy.budget.maxNearInstances;
+    backend::CrowdDesc desc;
+    desc.characters = mCharacters;
+    desc.animation = &mBaked;
+    desc.maxInstances = maxAgents;
+    desc.maxIds = maxAgents;
+    desc.nearSlots = std::min(nearSlots, maxAgents);
+    return desc;
+}
+
+uint32_t InstancedCrowd::bakedClip(uint32_t asset, int clip) const {
+    return mBaked.globalClip(asset, clip >= 0 ? character::bakedClipIndex(uint32_t(clip)) : character::kBakedRestPose);
+}
+
+void InstancedCrowd::begin(size_t count) {
+    mInstances.resize(count);
+    mLodInstances.resize(count);
+}
+
+void InstancedCrowd::set(size_t i, const shader::CrowdInstance& instance) {
+    mInstances[i] = instance;
+    mLodInstances[i] = {instance.sphere, instance.ids.x, instance.ids.y};
+}
+
+const lod::LodFrame& InstancedCrowd::select(const lod::LodView& view, const lod::LodPolicy& policy) {
+    TESSERA_CPU_SCOPE("crowd.lod");
+    mLod.setPolicy(policy);
+    return mLod.update(mLodInstances, mCosts, view);
+}
+
+backend::CrowdDrawInfo InstancedCrowd::drawInfo(bool displacement, bool lodColors) const {
+    backend::CrowdDrawInfo draw;
+    draw.instances = mInstances;
+    draw.lod = mLod.frame().params;
+    draw.displacement = displacement;
+    draw.lodColors = lodColors;
+    return draw;
+}
+
+} // namespace tessera::runtime
+
+namespace tessera::runtime {
+
+Status InstancedCrowd::writeTiers(const std::string& path, const std::string& backend,
+                                  const backend::CrowdTiers& gpu) const {
+    auto ids = [this](auto indices) {
+        std::vector<uint32_t> out;
+        for (uint32_t i : indices) out.push_back(i < mInstances.size() ? mInstances[i].ids.x : UINT32_MAX);
+        std::sort(out.begin(), out.end());
+        return out;
+    };
+    JsonWriter json(true);
+    json.beginObject();
+    json.keyValue("backend", backend);
+    json.keyValue("instances", uint64_t(mInstances.size()));
+    for (const char* source : {"backend", "reference"}) {
+        json.key(std::string(source) + "Tiers");
+        json.beginObject();
+        for (uint32_t t = 0; t < lod::kTierCount; ++t) {
+            std::vector<uint32_t> list;
+            if (source == std::string("backend")) {
+                list = ids(gpu.instances[t]);
+            } else {
+                std::vector<uint32_t> indices;
+                for (const lod::LodDraw& d : mLod.frame().tiers[t]) indices.push_back(d.instance);
+                list = ids(indices);
+            }
+            json.key(lod::toString(lod::Tier(t)));
+            json.beginArray();
+            for (uint32_t id : list) json.value(uint64_t(id));
+            json.endArray();
+        }
+        json.endObject();
+    }
+    json.endObject();
+    std::ofstream out(path, std::ios::binary);
+    out << json.str();
+    if (!out) return Error{path + ": cannot write the crowd tiers"};
+    return {};
+}
+
+} // namespace tessera::runtime

@@ -1,0 +1,225 @@
+#include "tessera/runtime/RenderSession.h"
+
+#include "tessera/runtime/World.h"
+#include "tessera/core/Log.h"
+#include "tessera/profiler/CpuScope.h"
+#include "tessera/profiler/Profiler.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace tessera::runtime {
+
+Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& options, terrain::Terrain& terrain) {
+    std::unique_ptr<RenderSession> session(new RenderSession());
+    session->mTerrain = &terrain;
+    auto selected = selectBackend(options);
+    if (!selected) return selected.error();
+    session->mSelected = std::move(selected.value());
+    log::info("backend " + session->capabilities().name + " on " + session->deviceName());
+
+    session->mWidth = options.width;
+    session->mHeight = options.height;
+    gpu::Device* device = session->mSelected->device.get();
+    if (device) {
+        if (options.window) {
+            auto swapchain = gpu::Swapchain::create(*session->mSelected->instance, *device, session->mWidth,
+                                                    session->mHeight, "Tessera");
+            if (!swapchain) return swapchain.error();
+            session->mSwapchain = std::move(swapchain.value());
+        }
+        session->mTarget = std::make_unique<gpu::RenderTarget>(*device, session->mWidth, session->mHeight);
+        session->mScheduler =
+            std::make_unique<gpu::FrameScheduler>(*device, profiler::Profiler::global(), *session->mTarget);
+    }
+
+    backend::BackendInitInfo init;
+    init.device = device;
+    if (device) init.features = device->features();
+    init.colorFormat = static_cast<uint32_t>(gpu::RenderTarget::kColorFormat);
+    init.depthFormat = static_cast<uint32_t>(gpu::RenderTarget::kDepthFormat);
+    backend::Backend& backend = *session->mSelected->backend;
+    if (auto ok = backend.initialize(init); !ok) return ok.error();
+    // The upload copies the CPU height field as it is now, craters included,
+    // so the splats still queued (--splat) must not be applied a second time.
+    (void)terrain.takePendingSplats();
+    auto handle = backend.createTerrain({&terrain});
+    if (!handle) {
+        backend.shutdown();
+        return handle.error();
+    }
+    session->mTerrainHandle = handle.value();
+    return session;
+}
+
+RenderSession::~RenderSession() {
+    if (!mSelected || !mSelected->backend) return;
+    if (mScheduler) mScheduler->waitIdle();
+    for (backend::CharacterHandle character : mCharacters) mSelected->backend->destroyCharacter(character);
+    for (backend::SubdivHandle surface : mSubdivs) mSelected->backend->destroySubdiv(surface);
+    if (mTerrainHandle.valid()) mSelected->backend->destroyTerrain(mTerrainHandle);
+    mSelected->backend->shutdown();
+}
+
+lod::DeviceClass RenderSession::deviceClass() const {
+    return mSelected->device && mSelected->device->features().isCpu ? lod::DeviceClass::Cpu : lod::DeviceClass::Gpu;
+}
+
+std::string RenderSession::deviceName() const {
+    return mSelected->device ? mSelected->device->features().deviceName : std::string("none (null backend)");
+}
+
+std::string RenderSession::driverName() const {
+    if (!mSelected->device) return "none";
+    const auto& f = mSelected->device->features();
+    return f.driverName + " " + f.driverInfo;
+}
+
+Result<terrain::TessellationSettings> RenderSession::resolveTessellation(const Options& options) const {
+    const auto& caps = capabilities();
+    terrain::TessellationSettings settings = options.tessellation;
+    if (options.terrainMode) {
+        settings.mode = *options.terrainMode;
+        if (!caps.drawsTerrainMode(settings.mode)) {
+            std::ostringstream modes;
+            for (auto m : {terrain::TerrainMode::LowRes, terrain::TerrainMode::Continuous, terrain::TerrainMode::Adaptive})
+                if (caps.drawsTerrainMode(m)) modes << (modes.tellp() > 0 ? ", " : "") << terrain::toString(m);
+            return fail("--terrain-mode ", terrain::toString(settings.mode), ": backend ", caps.name,
+                        " does not draw it (it draws: ", modes.str(), ")");
+        }
+    } else {
+        settings.mode = caps.drawsTerrainMode(terrain::TerrainMode::Adaptive) ? terrain::TerrainMode::Adaptive
+                                                                               : terrain::TerrainMode::LowRes;
+    }
+    if (settings.mode == terrain::TerrainMode::LowRes) return settings;
+    // A level the user asked for and the backend cannot draw is an error;
+    // the defaults (64, 15) are clamped to the backend's maximum instead, as
+    // D3D10-era hardware clamps to 14.99.
+    const std::string top = formatNumber(caps.maxTessFactor);
+    if (options.tessMaxGiven && settings.maxLevel > caps.maxTessFactor)
+        return fail("--tess-max ", formatNumber(settings.maxLevel), ": backend ", caps.name, " tessellates up to level ",
+                    top);
+    if (settings.mode == terrain::TerrainMode::Continuous && options.tessLevelGiven &&
+        settings.continuousLevel > caps.maxTessFactor)
+        return fail("--tess-level ", formatNumber(settings.continuousLevel), ": backend ", caps.name,
+                    " tessellates up to level ", top);
+    settings.maxLevel = std::min(settings.maxLevel, caps.maxTessFactor);
+    settings.continuousLevel = std::min(settings.continuousLevel, caps.maxTessFactor);
+    return settings;
+}
+
+Status RenderSession::createCharacters(CharacterAssets& assets) {
+    TESSERA_CPU_SCOPE("load.characterUpload");
+    std::vector<backend::CharacterHandle> handles;
+    for (const CrowdAsset& asset : assets.all()) {
+        auto handle = mSelected->backend->createCharacter({&asset.asset, asset.box});
+        if (!handle) return fail(asset.file, ": ", handle.error().message);
+        handles.push_back(handle.value());
+        mCharacters.push_back(handle.value());
+    }
+    assets.bind(std::move(handles));
+    return {};
+}
+
+Status RenderSession::createCrowd(const backend::CrowdDesc& desc) {
+    TESSERA_CPU_SCOPE("load.crowdUpload");
+    auto handle = mSelected->backend->createCrowd(desc);
+    if (!handle) return fail("backend ", capabilities().name, ": ", handle.error().message);
+    mCrowd = handle.value();
+    return {};
+}
+
+Status RenderSession::createSubdivs(SubdivSource& models) {
+    TESSERA_CPU_SCOPE("load.subdivUpload");
+    for (size_t i = 0; i < models.size(); ++i) {
+        auto handle = mSelected->backend->createSubdiv(models.desc(i));
+        if (!handle) return fail("backend ", capabilities().name, ": ", handle.error().message);
+        models.setHandle(i, handle.value());
+        mSubdivs.push_back(handle.value());
+    }
+    return {};
+}
+
+Result<backend::SubdivPoints> RenderSession::readSubdivPoints(backend::SubdivHandle handle) {
+    return mSelected->backend->readSubdivPoints(handle);
+}
+
+Result<backend::CrowdTiers> RenderSession::readCrowdTiers() {
+    if (!mCrowd.valid()) return Error{"no instanced crowd on backend " + capabilities().name};
+    return mSelected->backend->readCrowdTiers(mCrowd);
+}
+
+bool RenderSession::pollWindow() {
+    if (!mSwapchain) return true;
+    if (mSwapchain->pollEvents()) mSwapchain->recreate();
+    return !mSwapchain->shouldClose();
+}
+
+void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera,
+                                const terrain::TessellationSettings& settings, const glm::vec3& clearColor,
+                                bool wireframe, bool readback, const backend::CharacterDrawInfo* characters,
+                                const backend::CrowdDrawInfo* crowd, std::span<const SubdivDraw> surfaces) {
+    backend::Backend& backend = *mSelected->backend;
+    mVisible.clear();
+    {
+        TESSERA_CPU_SCOPE("terrain.cull");
+        if (mTerrainVisible) mTerrain->cull(camera.frustum(), camera.position(), mVisible);
+    }
+    const std::vector<terrain::CraterSplat> splats = mTerrain->takePendingSplats();
+    backend::FrameInfo info;
+    info.frameIndex = frameIndex;
+    info.timeSeconds = frameIndex * World::kSecondsPerFrame;
+    info.view = camera.view();
+    info.projection = camera.projection();
+    info.viewProjection = camera.viewProjection();
+    info.cameraPosition = camera.position();
+    info.clearColor = glm::vec4(clearColor, 1.0f);
+    info.width = mWidth;
+    info.height = mHeight;
+    info.wireframe = wireframe;
+    {
+        TESSERA_CPU_SCOPE("render.record");
+        if (mScheduler) info.gpu = &mScheduler->beginFrame(frameIndex);
+        backend.beginFrame(info);
+        backend.splatTerrain(mTerrainHandle, splats);
+        if (mTerrainVisible) backend.drawTerrain(mTerrainHandle, {mVisible, settings});
+        if (characters) backend.drawCharacters(*characters);
+        if (crowd && mCrowd.valid()) backend.drawCrowd(mCrowd, *crowd);
+        for (const SubdivDraw& surface : surfaces) {
+            if (!surface.tileRects.empty()) backend.updateSubdivTiles(surface.handle, surface.tiles, surface.tileRects);
+            backend.drawSubdiv(surface.handle, surface.info);
+        }
+        backend.endFrame();
+    }
+    if (mScheduler) {
+        TESSERA_CPU_SCOPE("render.submit");
+        mScheduler->endFrame(readback, mSwapchain.get());
+    }
+    auto& profiler = profiler::Profiler::global();
+    const backend::FrameReport report = backend.lastFrameReport();
+    profiler.recordCounter({"patches drawn", uint64_t(frameIndex), profiler.nowNs(), double(report.terrainPatchesDrawn)});
+    profiler.recordCounter({"craters splatted", uint64_t(frameIndex), profiler.nowNs(), double(report.splatsApplied)});
+    if (characters)
+        profiler.recordCounter({"character triangles", uint64_t(frameIndex), profiler.nowNs(),
+                                double(report.characterTriangles)});
+    if (crowd) {
+        // The GPU's own counts (a backend reads them back a few frames late).
+        static const char* const kTierCounters[3] = {"crowd near instances", "crowd middle instances",
+                                                     "crowd far instances"};
+        for (int t = 0; t < 3; ++t)
+            profiler.recordCounter({kTierCounters[t], uint64_t(frameIndex), profiler.nowNs(),
+                                    double(report.crowdInstances[t])});
+    }
+}
+
+std::vector<uint8_t> RenderSession::finish() {
+    if (!mScheduler) return {};
+    mScheduler->waitIdle();
+    return mScheduler->readbackPixels();
+}
+
+Result<std::vector<uint16_t>> RenderSession::readHeights() {
+    return mSelected->backend->readTerrainHeights(mTerrainHandle);
+}
+
+} // namespace tessera::runtime

@@ -1,0 +1,112 @@
+#include "tessera/runtime/Runner.h"
+
+#include "tessera/runtime/BackendSelection.h"
+#include "CharacterBenchmark.h"
+#include "CrowdBenchmark.h"
+#include "CrowdRenderBenchmark.h"
+#include "SubdivBenchmark.h"
+#include "tessera/runtime/Outputs.h"
+#include "tessera/runtime/World.h"
+#include "tessera/runtime/InstancedCrowd.h"
+#include "LodSettings.h"
+#include "tessera/runtime/RenderSession.h"
+#include "tessera/runtime/SceneRun.h"
+#include "TerrainBenchmark.h"
+#include "tessera/core/ImageFile.h"
+#include "tessera/core/Log.h"
+#include "tessera/profiler/CpuScope.h"
+#include "tessera/profiler/Profiler.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+namespace tessera::runtime {
+namespace {
+
+constexpr uint32_t kDefaultHeadlessFrames = 60;
+
+Status runFlythrough(const Options& options) {
+    auto& profiler = profiler::Profiler::global();
+    profiler.setEnabled(!options.capture.empty() || !options.benchmark.empty());
+
+    // --warmup frames run first and are discarded from the benchmark; --frames
+    // counts the frames after them.
+    const uint32_t measured =
+        options.frames ? options.frames : (options.window ? UINT32_MAX - options.warmup : kDefaultHeadlessFrames);
+    const uint32_t frames = options.warmup + measured;
+    auto created = SceneRun::create(options, frames);
+    if (!created) return created.error();
+    SceneRun& run = *created.value();
+    World& scene = run.world();
+    RenderSession& session = run.session();
+    InstancedCrowd* instanced = run.instancedCrowd();
+
+    if (!options.record.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(options.record, ec);
+        if (ec) return fail("--record ", options.record, ": ", ec.message());
+    }
+    uint32_t rendered = 0;
+    for (uint32_t frame = 0; frame < frames; ++frame, ++rendered) {
+        const bool record = !options.record.empty();
+        if (!run.step(frame, record || (frame + 1 == frames && !options.screenshot.empty()))) break;
+        if (record) {
+            // Waits for the frame: a recording is for looking at, not timing.
+            char name[32];
+            std::snprintf(name, sizeof name, "frame_%04u.png", frame);
+            const std::filesystem::path path = std::filesystem::path(options.record) / name;
+            if (Status ok = writePng(path, {session.width(), session.height(), session.finish()}); !ok) return ok;
+        }
+    }
+    const std::vector<uint8_t> pixels = session.finish();
+    if (!options.crowdTiers.empty()) {
+        if (!instanced) return fail("--crowd-tiers: backend ", session.capabilities().name,
+                                    " draws no instanced crowd here (it needs --scene crowd)");
+        auto tiers = session.readCrowdTiers();
+        if (!tiers) return tiers.error();
+        if (Status ok = instanced->writeTiers(options.crowdTiers, session.capabilities().name, tiers.value()); !ok)
+            return ok.error();
+        log::info("wrote " + options.crowdTiers);
+    }
+    if (options.meteors) log::info(std::to_string(scene.impactsLanded()) + " meteor impacts landed");
+    if (const SimulatedCrowd* crowd = scene.simulatedCrowd()) std::printf("%s\n", crowd->summary().c_str());
+    return writeOutputs(options, session, scene.terrain(), pixels, rendered);
+}
+
+} // namespace
+
+int execute(const Options& options) {
+    if (options.listDevices || options.listBackends) {
+        Status listed = options.listDevices ? listDevices(options) : listBackends(options);
+        if (!listed) {
+            log::error(listed.error().message);
+            return 1;
+        }
+        return 0;
+    }
+    int code = 0;
+    {
+        Status ran = options.bench.empty()           ? runFlythrough(options)
+                     : options.bench == "characters" ? runCharacterBenchmark(options)
+                     : options.bench == "crowd-sim"  ? runCrowdBenchmark(options)
+                     : options.bench == "crowd"      ? runCrowdRenderBenchmark(options)
+                     : options.bench == "subdiv"     ? runSubdivBenchmark(options)
+                                                     : runTerrainBenchmark(options);
+        if (!ran) {
+            log::error(ran.error().message);
+            code = 1;
+        }
+    }
+    if (options.validation) {
+        // Printed after every Vulkan object is gone, so messages from
+        // destruction are counted too.
+        const uint64_t messages = validationMessages();
+        // On stderr, so stdout stays clean JSON for `--bench terrain` without --out.
+        std::fprintf(stderr, "validation messages: %llu\n", static_cast<unsigned long long>(messages));
+        if (messages > 0 && code == 0) code = 1;
+    }
+    return code;
+}
+
+} // namespace tessera::runtime
