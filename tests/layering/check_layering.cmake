@@ -32,6 +32,11 @@
 #             backend. The null backend links no GPU code, so not even
 #             backends/common. Backends are plugins loaded by name; the host,
 #             the runtime, the demo and the examples never include them.
+#   [tool-source]  a file under tools/<tool>/ other than its include/
+#             folder (the tool's sources, reached by a path such as
+#             ../../tools/creature/src/Bvh.h) from outside that tool: tests
+#             and other code link the tool's library and include its public
+#             headers by their normal path ("creature/Bvh.h").
 #
 # A folder that does not exist is simply empty. Build trees (top-level
 # build*/ folders, or any top-level folder holding a CMakeCache.txt), hidden
@@ -271,6 +276,19 @@ foreach(file IN LISTS files)
                     list(APPEND found "backend-header|backends are plugins loaded by name: nothing outside backends/ includes their headers, except the GPU tests' use of backends/common (${named})")
                 endif()
             endif()
+        endif()
+
+        # [tool-source]
+        set(tool "")
+        if(resolved MATCHES "^tools/([^/]+)/(.*)$")
+            set(tool "${CMAKE_MATCH_1}")
+            set(toolPath "${CMAKE_MATCH_2}")
+        elseif(resolved STREQUAL "" AND include MATCHES "(^|/)tools/([^/]+)/(.*)$")
+            set(tool "${CMAKE_MATCH_2}")
+            set(toolPath "${CMAKE_MATCH_3}")
+        endif()
+        if(NOT tool STREQUAL "" AND NOT file MATCHES "^tools/${tool}/" AND NOT toolPath MATCHES "^include/")
+            list(APPEND found "tool-source|link the tool's library and include its public headers (tools/${tool}/include), not its sources")
         endif()
 
         foreach(violation IN LISTS found)
