@@ -1,7 +1,7 @@
 # check_layering.cmake: Tessera's layering, checked rather than promised
-# (docs/ARCHITECTURE.md, "Layers"). Scans the #include lines of every C and
-# C++ source file under a tree and fails, naming file:line and the rule, where
-# a file includes what its layer may not:
+# (docs/ARCHITECTURE.md, "Layers"). Scans every C and C++ source file under a
+# tree and fails, naming file:line and the rule, where a file includes what
+# its layer may not, or records a barrier by hand:
 #
 #   cmake -DTESSERA_LAYERING_ROOT=<source tree> [-DTESSERA_LAYERING_EXEMPTIONS=OFF]
 #         -P check_layering.cmake
@@ -32,6 +32,10 @@
 #             backend. The null backend links no GPU code, so not even
 #             backends/common. Backends are plugins loaded by name; the host,
 #             the runtime, the demo and the examples never include them.
+#   [barrier]  a call of vkCmdPipelineBarrier (or ...2, ...2KHR) anywhere but
+#             engine/src/gpu/Barriers.cpp: every barrier goes through the GPU
+#             layer's helpers (memoryBarrier, imageBarrier, bufferBarrier,
+#             pipelineBarrier in Barriers.h; transitionImage in Image.h).
 #   [tool-source]  a file under tools/<tool>/ other than its include/
 #             folder (the tool's sources, reached by a path such as
 #             ../../tools/creature/src/Bvh.h) from outside that tool: tests
@@ -41,7 +45,8 @@
 # A folder that does not exist is simply empty. Build trees (top-level
 # build*/ folders, or any top-level folder holding a CMakeCache.txt), hidden
 # folders and the negative control's planted tree are not scanned. Lines are
-# matched as written: an #include inside a block comment or #if 0 counts.
+# matched as written: an #include or a call inside a block comment or #if 0
+# counts.
 cmake_minimum_required(VERSION 3.25)
 
 if(NOT DEFINED TESSERA_LAYERING_ROOT)
@@ -197,7 +202,7 @@ foreach(file IN LISTS files)
     get_filename_component(fileDir "${file}" DIRECTORY)
 
     file(READ "${root}/${file}" content)
-    if(NOT content MATCHES "#[ \t]*include")
+    if(NOT content MATCHES "#[ \t]*include" AND NOT content MATCHES "vkCmdPipelineBarrier")
         continue()
     endif()
     string(REPLACE "\\" "${kBackslash}" content "${content}")
@@ -208,6 +213,12 @@ foreach(file IN LISTS files)
     set(lineNumber 0)
     foreach(line IN LISTS lines)
         math(EXPR lineNumber "${lineNumber} + 1")
+        # [barrier]
+        if(line MATCHES "vkCmdPipelineBarrier(2|2KHR)?[ \t]*\\(" AND NOT file STREQUAL "engine/src/gpu/Barriers.cpp")
+            message("${file}:${lineNumber}: [barrier] vkCmdPipelineBarrier: record barriers through the GPU layer's helpers (tessera/gpu/Barriers.h, transitionImage in Image.h)")
+            math(EXPR violations "${violations} + 1")
+            continue()
+        endif()
         if(NOT line MATCHES "^[ \t]*#[ \t]*include[ \t]*([<\"])([^>\"]+)[>\"]")
             continue()
         endif()

@@ -30,7 +30,8 @@ set(expected
     "backends/r2vb/R2vbBad.cpp:6: [backend-header] #include \"HulldomainCharacterPatchPass.h\""
     "backends/null/NullBad.cpp:4: [gpu-layer] #include \"tessera/gpu/Device.h\""
     "backends/null/NullBad.cpp:5: [backend-header] #include \"GpuTerrain.h\""
-    "tests/content/Bad.cpp:3: [tool-source] #include \"../../tools/creature/src/Bvh.h\"")
+    "tests/content/Bad.cpp:3: [tool-source] #include \"../../tools/creature/src/Bvh.h\""
+    "backends/r2vb/R2vbBad.cpp:10: [barrier] vkCmdPipelineBarrier")
 # Planted lines that break no rule: a commented-out include, the runtime's
 # use of the GPU layer, a backend's own and the shared headers, the GPU tests,
 # a tool's public header.

@@ -4,3 +4,8 @@
 #include "GpuTerrain.h"
 #include "R2vbTargets.h"
 #include "HulldomainCharacterPatchPass.h"
+
+// A barrier recorded by hand instead of through tessera/gpu/Barriers.h.
+void recordByHand(VkCommandBuffer cmd, const VkDependencyInfo& dependency) {
+    vkCmdPipelineBarrier2(cmd, &dependency);
+}
