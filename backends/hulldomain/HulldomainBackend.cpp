@@ -2,20 +2,19 @@
 // tessellation level per control-mesh edge; tessellation control (hull) and
 // evaluation (domain) shaders draw the patches with levels up to 64.
 #include "BasicCharacterBackend.h"
-#include "CharacterPatchPass.h"
-#include "CharacterSkinPass.h"
 #include "tessera/shaders/FrameUniforms.h"
 #include "GpuCrowdSet.h"
+#include "HulldomainCharacterPatchPass.h"
+#include "HulldomainCharacterSkinPass.h"
 #include "HulldomainCrowdPass.h"
 #include "HulldomainSubdivPass.h"
-#include "TessFactorPass.h"
+#include "HulldomainTessFactorPass.h"
 #include "tessera/backend/PluginApi.h"
 
-
+#include "hulldomain_terrain_patch.tesc.spv.h"
+#include "hulldomain_terrain_patch.tese.spv.h"
+#include "hulldomain_terrain_patch.vert.spv.h"
 #include "terrain_basic.frag.spv.h"
-#include "terrain_patch.tesc.spv.h"
-#include "terrain_patch.tese.spv.h"
-#include "terrain_patch.vert.spv.h"
 
 namespace tessera::backends {
 namespace {
@@ -38,10 +37,10 @@ public:
 
 protected:
     Status initializeTechnique(const backend::BackendInitInfo& info) override {
-        mFactorPass = TessFactorPass(*mDevice, "hulldomain");
-        mCharacterSkin = CharacterSkinPass(*mDevice);
-        mCharacterPatches = CharacterPatchPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
-                                               static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
+        mFactorPass = HulldomainTessFactorPass(*mDevice, "hulldomain");
+        mCharacterSkin = HulldomainCharacterSkinPass(*mDevice);
+        mCharacterPatches = HulldomainCharacterPatchPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
+                                                         static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
         mCrowds = GpuCrowdSet(*mDevice);
         mCrowdPass = HulldomainCrowdPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
                                          static_cast<VkFormat>(info.depthFormat));
@@ -60,9 +59,9 @@ protected:
         gpu::GraphicsPipelineDesc desc;
         desc.name = "hulldomain.terrainPatches.fill";
         desc.layout = &mLayout;
-        desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, terrain_patch_vert_spv},
-                       {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, terrain_patch_tesc_spv},
-                       {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, terrain_patch_tese_spv},
+        desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, hulldomain_terrain_patch_vert_spv},
+                       {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, hulldomain_terrain_patch_tesc_spv},
+                       {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, hulldomain_terrain_patch_tese_spv},
                        {VK_SHADER_STAGE_FRAGMENT_BIT, terrain_basic_frag_spv}};
         // One control point per patch: its index, per instance.
         desc.vertexBindings = {{0, sizeof(uint32_t), VK_VERTEX_INPUT_RATE_INSTANCE}};
@@ -191,12 +190,12 @@ protected:
     }
 
 private:
-    TessFactorPass mFactorPass;
+    HulldomainTessFactorPass mFactorPass;
     HulldomainCrowdPass mCrowdPass;
     HulldomainSubdivPass mSubdivPass;
     GpuCrowdSet mCrowds;
-    CharacterSkinPass mCharacterSkin;
-    CharacterPatchPass mCharacterPatches;
+    HulldomainCharacterSkinPass mCharacterSkin;
+    HulldomainCharacterPatchPass mCharacterPatches;
     gpu::PipelineLayout mLayout;
     gpu::Pipeline mFillPipeline;
     gpu::Pipeline mWirePipeline;

@@ -4,12 +4,12 @@
 #include "tessera/gpu/Device.h"
 
 #include "character.frag_crowd.spv.h"
-#include "character_patch.tesc_crowd.spv.h"
-#include "character_patch.tese_crowd.spv.h"
-#include "character_patch.vert_crowd.spv.h"
-#include "crowd_cull.comp.spv.h"
 #include "crowd_mesh.vert.spv.h"
-#include "crowd_skin.comp.spv.h"
+#include "hulldomain_character_patch.tesc_crowd.spv.h"
+#include "hulldomain_character_patch.tese_crowd.spv.h"
+#include "hulldomain_character_patch.vert_crowd.spv.h"
+#include "hulldomain_crowd_cull.comp.spv.h"
+#include "hulldomain_crowd_skin.comp.spv.h"
 
 namespace tessera::backends {
 namespace {
@@ -31,8 +31,8 @@ HulldomainCrowdPass::HulldomainCrowdPass(gpu::Device& device, VkFormat colorForm
     mComputeLayout =
         CrowdDescriptors::layout(device, Mode::Storage, VK_SHADER_STAGE_COMPUTE_BIT, "hulldomain.crowd.computeLayout");
     mLayout = CrowdDescriptors::layout(device, Mode::Storage, VK_SHADER_STAGE_ALL_GRAPHICS, "hulldomain.crowd.layout");
-    mCull = gpu::ComputePipeline(device, mComputeLayout, crowd_cull_comp_spv, "hulldomain.crowd.cull");
-    mSkin = gpu::ComputePipeline(device, mComputeLayout, crowd_skin_comp_spv, "hulldomain.crowd.skin");
+    mCull = gpu::ComputePipeline(device, mComputeLayout, hulldomain_crowd_cull_comp_spv, "hulldomain.crowd.cull");
+    mSkin = gpu::ComputePipeline(device, mComputeLayout, hulldomain_crowd_skin_comp_spv, "hulldomain.crowd.skin");
 
     gpu::GraphicsPipelineDesc desc;
     desc.layout = &mLayout;
@@ -45,9 +45,9 @@ HulldomainCrowdPass::HulldomainCrowdPass(gpu::Device& device, VkFormat colorForm
     desc.colorFormats = {colorFormat};
     desc.depthFormat = depthFormat;
     desc.name = "hulldomain.crowd.near";
-    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, character_patch_vert_crowd_spv},
-                   {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, character_patch_tesc_crowd_spv},
-                   {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, character_patch_tese_crowd_spv},
+    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, hulldomain_character_patch_vert_crowd_spv},
+                   {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, hulldomain_character_patch_tesc_crowd_spv},
+                   {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, hulldomain_character_patch_tese_crowd_spv},
                    {VK_SHADER_STAGE_FRAGMENT_BIT, character_frag_crowd_spv}};
     desc.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
     desc.patchControlPoints = 3;

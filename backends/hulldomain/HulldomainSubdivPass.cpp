@@ -6,11 +6,11 @@
 
 #include <algorithm>
 
+#include "hulldomain_subdiv_patch.tesc.spv.h"
+#include "hulldomain_subdiv_patch.tese.spv.h"
+#include "hulldomain_subdiv_patch.vert.spv.h"
+#include "hulldomain_subdiv_refine.comp.spv.h"
 #include "subdiv.frag.spv.h"
-#include "subdiv_patch.tesc.spv.h"
-#include "subdiv_patch.tese.spv.h"
-#include "subdiv_patch.vert.spv.h"
-#include "subdiv_refine.comp.spv.h"
 
 namespace tessera::backends {
 
@@ -32,7 +32,7 @@ HulldomainSubdivPass::HulldomainSubdivPass(gpu::Device& device, VkFormat colorFo
                                          {TS_BINDING_SUBDIV_CAGE, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, compute},
                                          {TS_BINDING_SUBDIV_POINTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute}},
                                         sizeof(uint32_t), compute, "hulldomain.subdivRefine.layout");
-    mRefine = gpu::ComputePipeline(device, mRefineLayout, subdiv_refine_comp_spv, "hulldomain.subdivRefine");
+    mRefine = gpu::ComputePipeline(device, mRefineLayout, hulldomain_subdiv_refine_comp_spv, "hulldomain.subdivRefine");
 
     const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
     std::vector<gpu::BindingDesc> bindings = GpuSubdiv::evalBindings(graphics);
@@ -41,9 +41,9 @@ HulldomainSubdivPass::HulldomainSubdivPass(gpu::Device& device, VkFormat colorFo
     mLayout = gpu::PipelineLayout(device, bindings, 0, 0, "hulldomain.subdiv.layout");
     gpu::GraphicsPipelineDesc desc;
     desc.layout = &mLayout;
-    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, subdiv_patch_vert_spv},
-                   {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, subdiv_patch_tesc_spv},
-                   {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, subdiv_patch_tese_spv},
+    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, hulldomain_subdiv_patch_vert_spv},
+                   {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, hulldomain_subdiv_patch_tesc_spv},
+                   {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, hulldomain_subdiv_patch_tese_spv},
                    {VK_SHADER_STAGE_FRAGMENT_BIT, subdiv_frag_spv}};
     desc.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
     desc.patchControlPoints = 1;

@@ -3,6 +3,7 @@
 #include "tessera/shaders/FrameUniforms.h"
 #include "tessera/shaders/TerrainUniforms.h"
 #include "tessera/shaders/TessFactors.h"
+#include "tessera/gpu/Barriers.h"
 
 #include "r2vb_cage.frag.spv.h"
 #include "r2vb_cage.vert.spv.h"
@@ -35,10 +36,10 @@ void R2vbCagePass::record(gpu::FrameContext& frame, R2vbTargets& targets, const 
     // The cage's contents are rewritten each frame; the last reader was the
     // factor pass of an earlier frame.
     const VkImageMemoryBarrier2 toTarget =
-        r2vb::imageBarrier(cage, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+        gpu::imageBarrier(cage, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                            VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, 0, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                            VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    r2vb::barriers(cmd, {&toTarget, 1});
+    gpu::pipelineBarrier(cmd, {&toTarget, 1});
 
     gpu::Image* const attachments[1] = {&cage};
     r2vb::beginPoints(cmd, attachments, R2vbTargets::cageRows(patches), mLayout);
@@ -54,10 +55,10 @@ void R2vbCagePass::record(gpu::FrameContext& frame, R2vbTargets& targets, const 
     vkCmdEndRendering(cmd);
 
     const VkImageMemoryBarrier2 toFetch =
-        r2vb::imageBarrier(cage, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+        gpu::imageBarrier(cage, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                            VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    r2vb::barriers(cmd, {&toFetch, 1});
+    gpu::pipelineBarrier(cmd, {&toFetch, 1});
 }
 
 } // namespace tessera::backends

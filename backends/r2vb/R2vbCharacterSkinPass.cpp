@@ -1,10 +1,9 @@
 #include "R2vbCharacterSkinPass.h"
 
-#include "tessera/gpu/Barriers.h"
-
 #include "tessera/shaders/FrameUniforms.h"
 #include "R2vbRecording.h"
 #include "shaders/R2vbLayout.h"
+#include "tessera/gpu/Barriers.h"
 #include "tessera/gpu/FrameContext.h"
 
 #include "r2vb_character_skin.frag.spv.h"
@@ -62,10 +61,10 @@ void R2vbCharacterSkinPass::record(gpu::FrameContext& frame, const CharacterInst
     const uint32_t rows = rowsFor(c.vertexCount());
     // The previous instance's copy (or an earlier frame's) read this target last.
     const VkImageMemoryBarrier2 toTarget =
-        r2vb::imageBarrier(target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+        gpu::imageBarrier(target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                            VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    r2vb::barriers(cmd, {&toTarget, 1});
+    gpu::pipelineBarrier(cmd, {&toTarget, 1});
     gpu::Image* const attachments[1] = {&target};
     r2vb::beginPoints(cmd, attachments, rows, mLayout);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
@@ -78,10 +77,10 @@ void R2vbCharacterSkinPass::record(gpu::FrameContext& frame, const CharacterInst
 
     // The R2VB step: the target's rows become the instance's vertex data.
     const VkImageMemoryBarrier2 toCopy =
-        r2vb::imageBarrier(target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+        gpu::imageBarrier(target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                            VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
-    r2vb::barriers(cmd, {&toCopy, 1});
+    gpu::pipelineBarrier(cmd, {&toCopy, 1});
     r2vb::copyRows(cmd, target, rows, instance.compressed->buffer, 0);
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);

@@ -4,6 +4,7 @@
 #include "tessera/shaders/TerrainUniforms.h"
 #include "tessera/shaders/TessFactors.h"
 #include "tessera/shaders/TessPattern.h"
+#include "tessera/gpu/Barriers.h"
 
 #include "r2vb_commands.frag.spv.h"
 #include "r2vb_commands.vert.spv.h"
@@ -54,12 +55,12 @@ uint32_t R2vbCommandPass::record(gpu::FrameContext& frame, R2vbTargets& targets,
         std::array<gpu::Image*, R2VB_COMMAND_TARGETS> attachments;
         for (uint32_t i = 0; i < R2VB_COMMAND_TARGETS; ++i) {
             toTarget[i] =
-                r2vb::imageBarrier(images[i], VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                gpu::imageBarrier(images[i], VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                    VK_PIPELINE_STAGE_2_COPY_BIT, 0, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
             attachments[i] = &images[i];
         }
-        r2vb::barriers(cmd, toTarget);
+        gpu::pipelineBarrier(cmd, toTarget);
 
         // Whole rows are cleared, so the records past the last visible patch
         // hold zero commands, which draw nothing.
@@ -91,17 +92,17 @@ void R2vbCommandPass::copyToBuffers(VkCommandBuffer cmd, R2vbTargets& targets, u
     gpu::Buffer& commands = targets.commands();
     std::array<VkImageMemoryBarrier2, R2VB_COMMAND_TARGETS> toCopy;
     for (uint32_t i = 0; i < R2VB_COMMAND_TARGETS; ++i)
-        toCopy[i] = r2vb::imageBarrier(
+        toCopy[i] = gpu::imageBarrier(
             images[i], VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
             VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
     // The buffers' last readers were an earlier frame's emulated draw.
     const VkBufferMemoryBarrier2 toWrite[2] = {
-        r2vb::bufferBarrier(records, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, 0, VK_PIPELINE_STAGE_2_COPY_BIT,
+        gpu::bufferBarrier(records, VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, 0, VK_PIPELINE_STAGE_2_COPY_BIT,
                             VK_ACCESS_2_TRANSFER_WRITE_BIT),
-        r2vb::bufferBarrier(commands, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, 0, VK_PIPELINE_STAGE_2_COPY_BIT,
+        gpu::bufferBarrier(commands, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, 0, VK_PIPELINE_STAGE_2_COPY_BIT,
                             VK_ACCESS_2_TRANSFER_WRITE_BIT)};
-    r2vb::barriers(cmd, toCopy, toWrite);
+    gpu::pipelineBarrier(cmd, toCopy, toWrite);
 
     // The contract's layout: texel r outer levels, texel capacity + r inner
     // levels and patch; command c of every record in the c-th block of capacity.
@@ -112,11 +113,11 @@ void R2vbCommandPass::copyToBuffers(VkCommandBuffer cmd, R2vbTargets& targets, u
         r2vb::copyRows(cmd, images[R2vbTargets::kFirstCommandTarget + piece], rows, commands, piece * block);
 
     const VkBufferMemoryBarrier2 toRead[2] = {
-        r2vb::bufferBarrier(records, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+        gpu::bufferBarrier(records, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                             VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT),
-        r2vb::bufferBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+        gpu::bufferBarrier(commands, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                             VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT)};
-    r2vb::barriers(cmd, {}, toRead);
+    gpu::pipelineBarrier(cmd, {}, toRead);
 }
 
 } // namespace tessera::backends

@@ -3,6 +3,7 @@
 #include "tessera/shaders/FrameUniforms.h"
 #include "tessera/shaders/TerrainUniforms.h"
 #include "tessera/shaders/TessFactors.h"
+#include "tessera/gpu/Barriers.h"
 
 #include "r2vb_factors.frag.spv.h"
 #include "r2vb_factors.vert.spv.h"
@@ -37,10 +38,10 @@ void R2vbFactorPass::record(gpu::FrameContext& frame, R2vbTargets& targets, cons
         gpu::PassScope pass(frame, "r2vb.factors");
         gpu::Image& factors = targets.factors();
         // Rewritten each frame; the last reader was an earlier frame's copy.
-        const VkImageMemoryBarrier2 toTarget = r2vb::imageBarrier(
+        const VkImageMemoryBarrier2 toTarget = gpu::imageBarrier(
             factors, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
             0, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-        r2vb::barriers(cmd, {&toTarget, 1});
+        gpu::pipelineBarrier(cmd, {&toTarget, 1});
 
         gpu::Image* const attachments[1] = {&factors};
         r2vb::beginPoints(cmd, attachments, R2vbTargets::cageRows(patches), mLayout);
@@ -69,21 +70,21 @@ void R2vbFactorPass::copyToStream(VkCommandBuffer cmd, R2vbTargets& targets, uin
     gpu::Image& factors = targets.factors();
     gpu::Buffer& stream = targets.factorStream();
     const VkImageMemoryBarrier2 toCopy =
-        r2vb::imageBarrier(factors, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+        gpu::imageBarrier(factors, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
                            VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
     // The stream's last reader was an earlier command pass.
     const VkBufferMemoryBarrier2 toWrite =
-        r2vb::bufferBarrier(stream, VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT, 0, VK_PIPELINE_STAGE_2_COPY_BIT,
+        gpu::bufferBarrier(stream, VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT, 0, VK_PIPELINE_STAGE_2_COPY_BIT,
                             VK_ACCESS_2_TRANSFER_WRITE_BIT);
-    r2vb::barriers(cmd, {&toCopy, 1}, {&toWrite, 1});
+    gpu::pipelineBarrier(cmd, {&toCopy, 1}, {&toWrite, 1});
     // Four levels per patch, one row-major texel each: element i of the
     // buffer is texel i, so patch slot s's outer levels are the vec4 at s * 16.
     r2vb::copyRows(cmd, factors, R2vbTargets::cageRows(patches), stream, 0);
     const VkBufferMemoryBarrier2 toRead =
-        r2vb::bufferBarrier(stream, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+        gpu::bufferBarrier(stream, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                             VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT, VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT);
-    r2vb::barriers(cmd, {}, {&toRead, 1});
+    gpu::pipelineBarrier(cmd, {}, {&toRead, 1});
 }
 
 } // namespace tessera::backends

@@ -22,49 +22,6 @@ gpu::GraphicsPipelineDesc pointPipeline(const std::string& name, const gpu::Pipe
     return desc;
 }
 
-VkImageMemoryBarrier2 imageBarrier(const gpu::Image& image, VkImageLayout from, VkImageLayout to,
-                                   VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
-                                   VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {
-    VkImageMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-    barrier.srcStageMask = srcStage;
-    barrier.srcAccessMask = srcAccess;
-    barrier.dstStageMask = dstStage;
-    barrier.dstAccessMask = dstAccess;
-    barrier.oldLayout = from;
-    barrier.newLayout = to;
-    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.image = image.handle();
-    barrier.subresourceRange = {image.aspect(), 0, 1, 0, 1};
-    return barrier;
-}
-
-VkBufferMemoryBarrier2 bufferBarrier(const gpu::Buffer& buffer, VkPipelineStageFlags2 srcStage,
-                                     VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage,
-                                     VkAccessFlags2 dstAccess) {
-    VkBufferMemoryBarrier2 barrier{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-    barrier.srcStageMask = srcStage;
-    barrier.srcAccessMask = srcAccess;
-    barrier.dstStageMask = dstStage;
-    barrier.dstAccessMask = dstAccess;
-    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.buffer = buffer.handle();
-    barrier.offset = 0;
-    barrier.size = VK_WHOLE_SIZE;
-    return barrier;
-}
-
-void barriers(VkCommandBuffer cmd, std::span<const VkImageMemoryBarrier2> images,
-              std::span<const VkBufferMemoryBarrier2> buffers) {
-    VkDependencyInfo dependency{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dependency.imageMemoryBarrierCount = static_cast<uint32_t>(images.size());
-    dependency.pImageMemoryBarriers = images.data();
-    dependency.bufferMemoryBarrierCount = static_cast<uint32_t>(buffers.size());
-    dependency.pBufferMemoryBarriers = buffers.data();
-    vkCmdPipelineBarrier2(cmd, &dependency);
-}
-
 void beginPoints(VkCommandBuffer cmd, std::span<gpu::Image* const> targets, uint32_t rows,
                  const gpu::PipelineLayout& layout) {
     const uint32_t width = targets.front()->width();

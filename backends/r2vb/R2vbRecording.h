@@ -1,9 +1,10 @@
 #pragma once
 /// @file R2vbRecording.h
-/// Command-recording helpers every r2vb pass shares: batched barriers,
-/// rendering points into render targets, and the R2VB step itself (a
-/// render target's first rows copied to a buffer that later passes read as
-/// a vertex stream, texel buffer or indirect buffer).
+/// Command-recording helpers every r2vb pass shares: rendering points into
+/// render targets, and the R2VB step itself (a render target's first rows
+/// copied to a buffer that later passes read as a vertex stream, texel
+/// buffer or indirect buffer). Barriers go through the shared layer's
+/// helpers (tessera/gpu/Barriers.h).
 
 #include "CommandHelpers.h"
 #include "tessera/gpu/Buffer.h"
@@ -28,18 +29,6 @@ using PushBindings = std::function<void(const gpu::PipelineLayout&, std::span<co
 gpu::GraphicsPipelineDesc pointPipeline(const std::string& name, const gpu::PipelineLayout& layout,
                                         std::span<const uint32_t> vertexSpirv, std::span<const uint32_t> fragmentSpirv,
                                         std::vector<VkFormat> colorFormats);
-
-/// A whole-image layout transition, to batch with barriers().
-VkImageMemoryBarrier2 imageBarrier(const gpu::Image& image, VkImageLayout from, VkImageLayout to,
-                                   VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
-                                   VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
-/// A whole-buffer memory dependency, to batch with barriers().
-VkBufferMemoryBarrier2 bufferBarrier(const gpu::Buffer& buffer, VkPipelineStageFlags2 srcStage,
-                                     VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage,
-                                     VkAccessFlags2 dstAccess);
-/// Records one vkCmdPipelineBarrier2 with all of them.
-void barriers(VkCommandBuffer cmd, std::span<const VkImageMemoryBarrier2> images,
-              std::span<const VkBufferMemoryBarrier2> buffers = {});
 
 /// Begins rendering into `targets` (all the same size, COLOR_ATTACHMENT_OPTIMAL),
 /// clearing their first `rows` rows to zero and rendering only those. The

@@ -2,7 +2,7 @@
 // same t, same barycentrics, for closest hits and for two-sided "nearest to
 // the surface" queries.
 
-#include "../../tools/creature/src/Bvh.h"
+#include "creature/Bvh.h"
 #include "tessera/assets/GltfLoader.h"
 #include "tessera/core/Random.h"
 

@@ -4,7 +4,7 @@
 // once welded by position, and across every UV seam the renderer's bilinear
 // fetch of the displacement must agree on both sides (the paper's Figure 17),
 // measured in metres at 16 points per texel of edge length.
-#include "../../tools/creature/src/SeamFixer.h"
+#include "creature/SeamFixer.h"
 #include "tessera/assets/GltfLoader.h"
 
 #include <gtest/gtest.h>

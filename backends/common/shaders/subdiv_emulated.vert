@@ -4,8 +4,8 @@
 // one domain's record (EmulatedDrawSource.h; the record's patch index is the
 // domain). tsEmuDomainPoint places the point in the D3D11 rules' fixed
 // point, so (u, v) equals hulldomain's gl_TessCoord bit for bit, and the
-// rest is subdiv_patch.tese line for line: the same evaluation, the same
-// varyings, the same vertices.
+// rest is hulldomain_subdiv_patch.tese line for line: the same evaluation,
+// the same varyings, the same vertices.
 #extension GL_GOOGLE_include_directive : require
 #include "common_frame.glsl"
 #include "subdiv_eval.glsl"

@@ -3,8 +3,8 @@
 /// The baker's inner loop: one ray per covered texel from the cage surface
 /// to the sculpt, giving a displacement and a tangent-space normal.
 
-#include "Bvh.h"
 #include "UvRasterizer.h"
+#include "creature/Bvh.h"
 #include "creature/SculptMesh.h"
 #include "tessera/character/CageMesh.h"
 

@@ -1,4 +1,4 @@
-#include "Bvh.h"
+#include "creature/Bvh.h"
 
 #include <algorithm>
 #include <array>

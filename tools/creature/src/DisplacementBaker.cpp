@@ -2,9 +2,9 @@
 
 #include "BakeDilation.h"
 #include "BakeRayCaster.h"
-#include "Bvh.h"
-#include "SeamFixer.h"
 #include "UvRasterizer.h"
+#include "creature/Bvh.h"
+#include "creature/SeamFixer.h"
 
 #include <algorithm>
 #include <cmath>

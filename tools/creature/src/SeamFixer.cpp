@@ -1,4 +1,4 @@
-#include "SeamFixer.h"
+#include "creature/SeamFixer.h"
 
 #include "BakeBilinear.h"
 

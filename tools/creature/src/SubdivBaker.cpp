@@ -1,8 +1,8 @@
 #include "creature/SubdivBaker.h"
 
-#include "Bvh.h"
 #include "SubdivSampleTable.h"
 #include "SurfaceErrorMeter.h"
+#include "creature/Bvh.h"
 #include "tessera/subdiv/DisplacementConversion.h"
 #include "tessera/subdiv/DisplacementTiles.h"
 #include "tessera/subdiv/PtexTopology.h"

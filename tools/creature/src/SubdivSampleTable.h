@@ -5,7 +5,7 @@
 /// parallel up front (convertDisplacement asks for them one by one, on one
 /// thread), with misses filled from neighbouring texels.
 
-#include "Bvh.h"
+#include "creature/Bvh.h"
 #include "tessera/subdiv/DisplacementTiles.h"
 #include "tessera/subdiv/SubdivSurface.h"
 

@@ -6,7 +6,7 @@
 /// evenly over every face's parameter domain. Per face partial sums, reduced
 /// in face order: the same figures for any thread count.
 
-#include "Bvh.h"
+#include "creature/Bvh.h"
 #include "creature/SubdivBaker.h"
 #include "tessera/character/CharacterAsset.h"
 #include "tessera/subdiv/DisplacementTiles.h"

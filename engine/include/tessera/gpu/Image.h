@@ -66,6 +66,8 @@ private:
 
 /// Records a full-image layout transition with synchronization2 barriers.
 /// Stages and accesses are given explicitly so each pass states what it needs.
+/// One barrier on its own; imageBarrier and pipelineBarrier (Barriers.h)
+/// record several images and buffers at once.
 void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
                      VkImageLayout to, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
                      VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess, uint32_t mipLevels = 1);

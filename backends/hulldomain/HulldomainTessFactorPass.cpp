@@ -1,4 +1,4 @@
-#include "TessFactorPass.h"
+#include "HulldomainTessFactorPass.h"
 
 #include "tessera/gpu/Barriers.h"
 
@@ -7,11 +7,11 @@
 #include "tessera/shaders/FrameUniforms.h"
 #include "tessera/shaders/TerrainUniforms.h"
 
-#include "terrain_factors.comp.spv.h"
+#include "hulldomain_terrain_factors.comp.spv.h"
 
 namespace tessera::backends {
 
-TessFactorPass::TessFactorPass(gpu::Device& device, const std::string& backendName) {
+HulldomainTessFactorPass::HulldomainTessFactorPass(gpu::Device& device, const std::string& backendName) {
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
     mLayout = gpu::PipelineLayout(device,
                                   {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
@@ -23,11 +23,12 @@ TessFactorPass::TessFactorPass(gpu::Device& device, const std::string& backendNa
                                    {TS_BINDING_EDGE_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
                                    {TS_BINDING_PATCH_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute}},
                                   0, 0, backendName + ".terrainFactors.layout");
-    mPipeline = gpu::ComputePipeline(device, mLayout, terrain_factors_comp_spv, backendName + ".terrainFactors");
+    mPipeline =
+        gpu::ComputePipeline(device, mLayout, hulldomain_terrain_factors_comp_spv, backendName + ".terrainFactors");
 }
 
-void TessFactorPass::record(gpu::FrameContext& frame, GpuTerrain& terrain, const gpu::UniformSlice& tessUniforms,
-                            const PushBindings& pushBindings) {
+void HulldomainTessFactorPass::record(gpu::FrameContext& frame, GpuTerrain& terrain,
+                                      const gpu::UniformSlice& tessUniforms, const PushBindings& pushBindings) {
     gpu::PassScope pass(frame, "terrain.factors");
     VkCommandBuffer cmd = frame.cmd();
     const uint32_t slot = frame.slot();

@@ -1,5 +1,5 @@
 #pragma once
-/// @file CharacterPatchPass.h
+/// @file HulldomainCharacterPatchPass.h
 /// hulldomain's tessellated character draw (D3D11 style): the cage triangles
 /// as 3-point patches, a pass-through hull stage with the draw's continuous
 /// level (up to 64), and the paper's Listing 8 evaluation in the domain stage.
@@ -12,10 +12,10 @@
 
 namespace tessera::backends {
 
-class CharacterPatchPass {
+class HulldomainCharacterPatchPass {
 public:
-    CharacterPatchPass() = default;
-    CharacterPatchPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat, bool wireframe);
+    HulldomainCharacterPatchPass() = default;
+    HulldomainCharacterPatchPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat, bool wireframe);
 
     /// Draws one instance inside the main pass.
     void record(gpu::FrameContext& frame, const CharacterInstance& instance, backend::CharacterPath path,

@@ -1,21 +1,21 @@
-#include "CharacterPatchPass.h"
+#include "HulldomainCharacterPatchPass.h"
 
 #include "CommandHelpers.h"
 #include "tessera/shaders/FrameUniforms.h"
 #include "tessera/gpu/FrameContext.h"
 
 #include "character.frag.spv.h"
-#include "character_patch.tesc.spv.h"
-#include "character_patch.tesc_single.spv.h"
-#include "character_patch.tese.spv.h"
-#include "character_patch.tese_single.spv.h"
-#include "character_patch.vert.spv.h"
-#include "character_patch.vert_single.spv.h"
+#include "hulldomain_character_patch.tesc.spv.h"
+#include "hulldomain_character_patch.tesc_single.spv.h"
+#include "hulldomain_character_patch.tese.spv.h"
+#include "hulldomain_character_patch.tese_single.spv.h"
+#include "hulldomain_character_patch.vert.spv.h"
+#include "hulldomain_character_patch.vert_single.spv.h"
 
 namespace tessera::backends {
 
-CharacterPatchPass::CharacterPatchPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat,
-                                       bool wireframe) {
+HulldomainCharacterPatchPass::HulldomainCharacterPatchPass(gpu::Device& device, VkFormat colorFormat,
+                                                           VkFormat depthFormat, bool wireframe) {
     const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
     mLayout = characterLayout(device, CharacterBindings::Draw, graphics, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 0, 0,
                               "hulldomain.characterPatches.layout");
@@ -23,13 +23,14 @@ CharacterPatchPass::CharacterPatchPass(gpu::Device& device, VkFormat colorFormat
         gpu::GraphicsPipelineDesc desc;
         desc.layout = &mLayout;
         using Spirv = std::span<const uint32_t>;
-        desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT,
-                        single ? Spirv(character_patch_vert_single_spv) : Spirv(character_patch_vert_spv)},
-                       {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT,
-                        single ? Spirv(character_patch_tesc_single_spv) : Spirv(character_patch_tesc_spv)},
-                       {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT,
-                        single ? Spirv(character_patch_tese_single_spv) : Spirv(character_patch_tese_spv)},
-                       {VK_SHADER_STAGE_FRAGMENT_BIT, character_frag_spv}};
+        desc.stages = {
+            {VK_SHADER_STAGE_VERTEX_BIT,
+             single ? Spirv(hulldomain_character_patch_vert_single_spv) : Spirv(hulldomain_character_patch_vert_spv)},
+            {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT,
+             single ? Spirv(hulldomain_character_patch_tesc_single_spv) : Spirv(hulldomain_character_patch_tesc_spv)},
+            {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT,
+             single ? Spirv(hulldomain_character_patch_tese_single_spv) : Spirv(hulldomain_character_patch_tese_spv)},
+            {VK_SHADER_STAGE_FRAGMENT_BIT, character_frag_spv}};
         // No vertex streams: the vertex stage reads by gl_VertexIndex.
         desc.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
         desc.patchControlPoints = 3;
@@ -51,8 +52,8 @@ CharacterPatchPass::CharacterPatchPass(gpu::Device& device, VkFormat colorFormat
     }
 }
 
-void CharacterPatchPass::record(gpu::FrameContext& frame, const CharacterInstance& instance,
-                                backend::CharacterPath path, bool wireframe, const CharacterPushFn& push) {
+void HulldomainCharacterPatchPass::record(gpu::FrameContext& frame, const CharacterInstance& instance,
+                                          backend::CharacterPath path, bool wireframe, const CharacterPushFn& push) {
     VkCommandBuffer cmd = frame.cmd();
     GpuCharacter& c = *instance.character;
     const int single = path == backend::CharacterPath::SinglePass ? 1 : 0;

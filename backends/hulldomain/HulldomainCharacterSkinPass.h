@@ -1,5 +1,5 @@
 #pragma once
-/// @file CharacterSkinPass.h
+/// @file HulldomainCharacterSkinPass.h
 /// hulldomain's pass 1 of the two-pass character path (D3D11 style): a
 /// compute shader skins every cage vertex once and writes the 128-bit
 /// compressed vertex to a storage buffer.
@@ -10,10 +10,10 @@
 
 namespace tessera::backends {
 
-class CharacterSkinPass {
+class HulldomainCharacterSkinPass {
 public:
-    CharacterSkinPass() = default;
-    explicit CharacterSkinPass(gpu::Device& device);
+    HulldomainCharacterSkinPass() = default;
+    explicit HulldomainCharacterSkinPass(gpu::Device& device);
 
     /// Dispatches one invocation per cage vertex into `instance.compressed`,
     /// then makes the writes visible to vertex-shader reads.

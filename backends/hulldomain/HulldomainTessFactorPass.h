@@ -1,9 +1,9 @@
 #pragma once
-/// @file TessFactorPass.h
+/// @file HulldomainTessFactorPass.h
 /// hulldomain's factor pre-pass: a compute dispatch that writes one level per
-/// canonical control-mesh edge and per patch (terrain_factors.comp), the
-/// D3D11 way of moving the metric out of the hull shader so each shared edge
-/// is evaluated once.
+/// canonical control-mesh edge and per patch
+/// (hulldomain_terrain_factors.comp), the D3D11 way of moving the metric out
+/// of the hull shader so each shared edge is evaluated once.
 
 #include "GpuTerrain.h"
 #include "tessera/shaders/TessFactors.h"
@@ -17,14 +17,14 @@
 
 namespace tessera::backends {
 
-class TessFactorPass {
+class HulldomainTessFactorPass {
 public:
     /// Pushes the frame, terrain and height-map bindings plus `extra` for a layout.
     using PushBindings = std::function<void(VkPipelineBindPoint, const gpu::PipelineLayout&, GpuTerrain&,
                                             std::span<const VkWriteDescriptorSet>)>;
 
-    TessFactorPass() = default;
-    TessFactorPass(gpu::Device& device, const std::string& backendName);
+    HulldomainTessFactorPass() = default;
+    HulldomainTessFactorPass(gpu::Device& device, const std::string& backendName);
 
     /// Records "terrain.factors": levels for every edge and patch of `terrain`
     /// into the slot's level buffers, then a barrier that makes them visible

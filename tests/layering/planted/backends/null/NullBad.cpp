@@ -1,0 +1,5 @@
+// Planted for the layering check's negative control (tests/layering): never
+// compiled, in no target, and skipped by the check of the real tree.
+// The null backend runs with no GPU.
+#include "tessera/gpu/Device.h"
+#include "GpuTerrain.h"

@@ -1,0 +1,4 @@
+#pragma once
+// Planted for the layering check's negative control (tests/layering): never
+// compiled, in no target, and skipped by the check of the real tree.
+#include "tessera/gpu/Device.h"

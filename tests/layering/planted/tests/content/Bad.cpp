@@ -1,0 +1,4 @@
+// Planted for the layering check's negative control (tests/layering): never
+// compiled, in no target, and skipped by the check of the real tree.
+#include "../../tools/creature/src/Bvh.h"
+#include "creature/SeamFixer.h"

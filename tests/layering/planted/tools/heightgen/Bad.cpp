@@ -1,0 +1,3 @@
+// Planted for the layering check's negative control (tests/layering): never
+// compiled, in no target, and skipped by the check of the real tree.
+#  include <volk.h>
