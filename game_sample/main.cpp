@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (options->help) {
-        std::fputs(tessera::demo::helpText(), stdout);
+        std::fputs(tessera::demo::helpText().c_str(), stdout);
         return 0;
     }
     return tessera::runtime::execute(options.value());

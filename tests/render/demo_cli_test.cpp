@@ -35,6 +35,10 @@ TEST(DemoCli, BadFlagsFailClearly) {
     expectCleanFailure({"--frobnicate"}, "unknown option \"--frobnicate\"");
     expectCleanFailure({"--frames"}, "--frames needs a value");
     expectCleanFailure({"--frames", "many"}, "--frames expects a whole number");
+    // One syntax for every program (tessera::cli): --flag=value reads the same.
+    expectCleanFailure({"--frames=many"}, "--frames expects a whole number");
+    expectCleanFailure({"--window=yes"}, "--window takes no value");
+    expectCleanFailure({"--backend", "null", "stray"}, "unexpected argument \"stray\"");
     expectCleanFailure({"--width", "0"}, "--width expects a whole number from 16");
     expectCleanFailure({"--camera", "1,2"}, "--camera");
     expectCleanFailure({"--clear-color", "1,0"}, "--clear-color expects r,g,b");
@@ -55,7 +59,7 @@ TEST(DemoCli, BadTerrainFlagsFailClearly) {
     expectUsageError({"--splat", "1,2,-5"}, "--splat expects x,z,radius[,depth]");
     expectUsageError({"--splat", "1,2,3,-1"}, "--splat expects x,z,radius[,depth]");
     expectUsageError({"--splat", "a,b,c"}, "--splat expects x,z,radius[,depth]");
-    expectUsageError({"--bench", "foo"}, "--bench expects \"terrain\", \"characters\", \"crowd\", \"crowd-sim\" or \"subdiv\", got \"foo\"");
+    expectUsageError({"--bench", "foo"}, "--bench expects terrain, characters, crowd, crowd-sim or subdiv, got \"foo\"");
     expectUsageError({"--meteors", "-1"}, "--meteors expects a whole number");
 }
 

@@ -1,24 +1,38 @@
 #include "HeightGenOptions.h"
 
+#include "tessera/cli/CommandLine.h"
+#include "tessera/cli/Validators.h"
 #include "tessera/terrain/HeightMapGenerator.h"
 
-#include <charconv>
 #include <limits>
-#include <string_view>
 
 namespace tessera::heightgen {
 namespace {
 
-template <class Integer>
-Result<Integer> parseInteger(std::string_view flag, std::string_view text) {
-    Integer value{};
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec == std::errc::result_out_of_range)
-        return fail(flag, ": ", text, " is out of range (at most ",
-                    std::to_string(std::numeric_limits<Integer>::max()), ")");
-    if (ec != std::errc() || end != text.data() + text.size() || text.empty())
-        return fail(flag, ": expected a non-negative whole number, got '", text, "'");
-    return value;
+constexpr const char* kDescription =
+    "Generates an eroded mountain height map as a 16-bit grayscale PNG. The same options always give "
+    "byte-identical files.";
+
+/// Declares the tool's flags on `line`, bound to `o`; `out` and `droplets`
+/// are read as text and numbers first (required, and optional).
+void declare(cli::CommandLine& line, HeightGenOptions& o, std::string& out, uint32_t& droplets) {
+    CLI::App& app = line.app();
+    app.add_option("--out", out, "output PNG path (required; parent folders are created)")
+        ->type_name("FILE")
+        ->check(cli::nonEmpty());
+    app.add_option("--size", o.size, "samples per side, a power of two in 64..8192 (default 2048)")
+        ->type_name("N")
+        ->check(cli::count(terrain::kMinGeneratedSize, terrain::kMaxGeneratedSize));
+    app.add_option("--seed", o.seed, "landscape seed, 0..2^64-1 (default 1)")
+        ->type_name("S")
+        ->check(cli::count(0, std::numeric_limits<uint64_t>::max()));
+    app.add_option("--erosion-droplets", droplets, "hydraulic erosion droplets (default size*size/4; 0 = none)")
+        ->type_name("N")
+        ->check(cli::count(0, std::numeric_limits<uint32_t>::max()));
+    app.add_option("--threads", o.threads, "worker threads, 0 = all (default 0; never changes the output)")
+        ->type_name("N")
+        ->check(cli::count(0, 1024));
+    app.add_flag("--quiet", o.quiet, "no progress bar and no summary line");
 }
 
 bool isPowerOfTwo(uint32_t v) { return v != 0 && (v & (v - 1)) == 0; }
@@ -26,70 +40,31 @@ bool isPowerOfTwo(uint32_t v) { return v != 0 && (v & (v - 1)) == 0; }
 } // namespace
 
 std::string heightGenUsage() {
-    return "usage: tessera-heightgen --out FILE [options]\n"
-           "Generates an eroded mountain height map as a 16-bit grayscale PNG.\n"
-           "The same options always give byte-identical files.\n"
-           "\n"
-           "  --out FILE              output PNG path (required; parent folders are created)\n"
-           "  --size N                samples per side, a power of two in 64..8192 (default 2048)\n"
-           "  --seed S                landscape seed, 0..2^64-1 (default 1)\n"
-           "  --erosion-droplets N    hydraulic erosion droplets (default size*size/4; 0 = none)\n"
-           "  --threads N             worker threads, 0 = all (default 0; never changes the output)\n"
-           "  --quiet                 no progress bar and no summary line\n"
-           "  --help                  print this help and exit\n";
+    cli::CommandLine line("tessera-heightgen", kDescription);
+    HeightGenOptions options;
+    std::string out;
+    uint32_t droplets = 0;
+    declare(line, options, out, droplets);
+    return line.help();
 }
 
 Result<HeightGenOptions> parseHeightGenOptions(int argc, const char* const* argv) {
+    cli::CommandLine line("tessera-heightgen", kDescription);
     HeightGenOptions options;
-    for (int k = 1; k < argc; ++k) {
-        std::string_view arg = argv[k];
-        if (arg == "--help" || arg == "-h") {
-            options.help = true;
-            return options;
-        }
-        if (arg == "--quiet") {
-            options.quiet = true;
-            continue;
-        }
-        if (!arg.starts_with("--")) return fail("unexpected argument '", arg, "'");
-
-        // "--flag=value" or "--flag value".
-        std::string_view flag = arg, value;
-        bool hasValue = false;
-        if (size_t eq = arg.find('='); eq != std::string_view::npos) {
-            flag = arg.substr(0, eq);
-            value = arg.substr(eq + 1);
-            hasValue = true;
-        }
-        const bool known = flag == "--size" || flag == "--seed" || flag == "--out" ||
-                           flag == "--erosion-droplets" || flag == "--threads";
-        if (!known) return fail("unknown option '", flag, "'");
-        if (!hasValue) {
-            if (k + 1 >= argc) return fail(flag, ": missing value");
-            value = argv[++k];
-        }
-
-        if (flag == "--out") {
-            if (value.empty()) return fail("--out: empty file name");
-            options.out = std::filesystem::path(value);
-        } else if (flag == "--seed") {
-            auto seed = parseInteger<uint64_t>(flag, value);
-            if (!seed) return seed.error();
-            options.seed = *seed;
-        } else {
-            auto number = parseInteger<uint32_t>(flag, value);
-            if (!number) return number.error();
-            if (flag == "--size") options.size = *number;
-            else if (flag == "--erosion-droplets") options.erosionDroplets = *number;
-            else options.threads = *number;
-        }
+    std::string out;
+    uint32_t droplets = 0;
+    declare(line, options, out, droplets);
+    auto parsed = line.parse(argc, argv);
+    if (!parsed) return parsed.error();
+    if (!parsed.value()) {
+        options.help = true;
+        return options;
     }
-
-    if (!isPowerOfTwo(options.size) || options.size < terrain::kMinGeneratedSize ||
-        options.size > terrain::kMaxGeneratedSize)
-        return fail("--size: must be a power of two between 64 and 8192, got ",
-                    std::to_string(options.size));
-    if (options.out.empty()) return fail("--out: required option missing");
+    if (!isPowerOfTwo(options.size))
+        return fail("--size must be a power of two between 64 and 8192, got ", std::to_string(options.size));
+    if (out.empty()) return fail("--out FILE is required");
+    options.out = out;
+    if (line.app().count("--erosion-droplets") > 0) options.erosionDroplets = droplets;
     return options;
 }
 

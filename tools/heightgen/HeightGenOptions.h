@@ -22,11 +22,11 @@ struct HeightGenOptions {
     bool help = false;                      ///< --help / -h: print usage and exit 0.
 };
 
-/// Parses argv[1..argc). Accepts "--flag value" and "--flag=value". Fails with
-/// a one-line message naming the offending flag or argument.
+/// Parses argv[1..argc) with the shared parser (tessera::cli): "--flag value"
+/// or "--flag=value". Fails with a one-line message naming the flag.
 Result<HeightGenOptions> parseHeightGenOptions(int argc, const char* const* argv);
 
-/// The usage text printed by --help and after a command-line error.
+/// The --help text (also printed after a command-line error).
 std::string heightGenUsage();
 
 } // namespace tessera::heightgen

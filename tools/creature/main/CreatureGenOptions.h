@@ -23,8 +23,8 @@ struct CreatureGenOptions {
     bool help = false;                      ///< --help / -h
 };
 
-/// Parses argv[1..argc) ("--flag value" or "--flag=value"); fails with one
-/// line naming the flag at fault.
+/// Parses argv[1..argc) with the shared parser (tessera::cli): "--flag value"
+/// or "--flag=value"; fails with one line naming the flag at fault.
 Result<CreatureGenOptions> parseCreatureGenOptions(int argc, const char* const* argv);
 
 /// Usage text for --help and after a command-line error.
