@@ -1,10 +1,10 @@
 // Error messages name the file and the problem; a hand-built .glb carries the
 // displacement map extras (a 16-bit PNG) through the loader exactly.
 #include "tessera/assets/GltfLoader.h"
+#include "tessera/core/ImageFile.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <png.h>
 
 #include <cstring>
 #include <filesystem>
@@ -33,32 +33,11 @@ std::string errorOf(const fs::path& file) {
     return result ? std::string() : result.error().message;
 }
 
-void appendPng(png_structp png, png_bytep data, png_size_t size) {
-    auto* out = static_cast<std::string*>(png_get_io_ptr(png));
-    out->append(reinterpret_cast<const char*>(data), size);
-}
-
-// A 16-bit grayscale PNG, written with libpng.
+// A 16-bit grayscale PNG, from the core's encoder.
 std::string png16(uint32_t width, uint32_t height, const std::vector<uint16_t>& texels) {
-    std::string out;
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    png_infop info = png_create_info_struct(png);
-    png_set_write_fn(png, &out, appendPng, nullptr);
-    png_set_IHDR(png, info, width, height, 16, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                 PNG_FILTER_TYPE_DEFAULT);
-    png_write_info(png, info);
-    std::vector<uint8_t> row(width * 2);
-    for (uint32_t y = 0; y < height; ++y) {
-        for (uint32_t x = 0; x < width; ++x) {
-            uint16_t v = texels[y * width + x];
-            row[x * 2] = static_cast<uint8_t>(v >> 8);  // PNG is big-endian
-            row[x * 2 + 1] = static_cast<uint8_t>(v & 0xFF);
-        }
-        png_write_row(png, row.data());
-    }
-    png_write_end(png, nullptr);
-    png_destroy_write_struct(&png, &info);
-    return out;
+    auto png = tessera::encodePng({width, height, tessera::PngLayout::Gray16, texels.data()});
+    EXPECT_TRUE(png.ok());
+    return png ? std::string(png->begin(), png->end()) : std::string();
 }
 
 std::string glb(const nlohmann::json& json, std::string bin) {

@@ -6,6 +6,7 @@
 /// base colour, normal and 16-bit displacement maps.
 
 #include "tessera/character/CharacterAsset.h"
+#include "tessera/core/Random.h"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -21,11 +22,8 @@ inline character::TextureImage makeTestImage(uint32_t width, uint32_t height, ch
     image.height = height;
     image.format = format;
     image.bytes.resize(size_t(width) * height * image.bytesPerTexel());
-    uint32_t state = 2166136261u ^ salt;
-    for (uint8_t& byte : image.bytes) {
-        state = (state ^ 0x9e3779b9u) * 16777619u;  // any fixed pattern will do
-        byte = static_cast<uint8_t>(state >> 24);
-    }
+    Random random(salt);  // any fixed pattern will do
+    for (uint8_t& byte : image.bytes) byte = static_cast<uint8_t>(random.nextU32() >> 24);
     return image;
 }
 

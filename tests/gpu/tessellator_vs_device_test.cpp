@@ -5,12 +5,12 @@
 // statistics must count what Tessellator::countTriangles/countPoints predict.
 #include "TessellationCaptureFixture.h"
 
+#include "tessera/core/Random.h"
 #include "tessera/tessellator/Tessellator.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <random>
 #include <set>
 #include <string>
 #include <utility>
@@ -89,8 +89,8 @@ std::vector<Case> sweep() {
     const Domain domains[] = {Domain::Triangle, Domain::Quad};
     const Partitioning spacings[] = {Partitioning::Integer, Partitioning::FractionalOdd, Partitioning::FractionalEven};
     const float uniform[] = {1.0f, 1.5f, 2.0f, 2.3f, 3.0f, 4.7f, 7.5f, 14.99f, 15.0f, 33.3f, 64.0f};
-    std::mt19937 rng(20261122u);
-    std::uniform_real_distribution<float> level(0.5f, 20.0f);
+    Random rng(20261122u);
+    auto level = [](Random& r) { return r.range(0.5f, 20.0f); };
     for (Domain d : domains)
         for (Partitioning p : spacings) {
             for (float l : uniform) cases.push_back({d, p, {{l, l, l, l}, {l, l}}});

@@ -17,7 +17,7 @@
 #include "DemoProcess.h"
 #include "TestFiles.h"
 #include "ImageCompare.h"
-#include "JsonReader.h"
+#include "JsonFile.h"
 
 #include "tessera/core/ImageFile.h"
 
@@ -137,27 +137,27 @@ struct BackendRun {
 
 /// Finds `passName` in the benchmark report at `path`.
 void readStats(const std::string& path, const std::string& passName, BackendRun& run) {
-    JsonValue report;
+    nlohmann::json report;
     std::string error;
-    if (!parseJson(readTextFile(path), report, error)) {
+    if (!readJsonFile(path, report, error)) {
         run.error = path + ": " + error;
         return;
     }
-    const JsonValue* passes = report.find("passes");
-    if (!passes || !passes->isArray()) {
+    const nlohmann::json* passes = memberOf(report, "passes");
+    if (!passes || !passes->is_array()) {
         run.error = path + ": no \"passes\" list";
         return;
     }
-    for (const JsonValue& pass : passes->array) {
-        const std::string name = pass.stringAt("name").value_or("?");
+    for (const nlohmann::json& pass : *passes) {
+        const std::string name = stringAt(pass, "name").value_or("?");
         run.passes += (run.passes.empty() ? "" : ", ") + name;
         if (name != passName) continue;
-        const JsonValue* s = pass.find("statsMedianFrame");
-        if (!s || !s->isObject()) {
+        const nlohmann::json* s = memberOf(pass, "statsMedianFrame");
+        if (!s || !s->is_object()) {
             run.error = path + ": pass " + passName + " has no pipeline statistics";
             return;
         }
-        auto count = [&](const char* key) { return static_cast<uint64_t>(s->numberAt(key).value_or(0.0)); };
+        auto count = [&](const char* key) { return static_cast<uint64_t>(numberAt(*s, key).value_or(0.0)); };
         PassStats stats;
         stats.clippingInvocations = count("clippingInvocations");
         stats.clippingPrimitives = count("clippingPrimitives");
@@ -334,43 +334,44 @@ TEST(BackendParityBench, BackendAllAgreesOnTrianglesAndWritesATracePerBackend) {
     EXPECT_NE(run.output.find("validation messages: 0"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("Backends side by side"), std::string::npos) << run.output;
 
-    JsonValue records;
+    nlohmann::json records;
     std::string error;
-    ASSERT_TRUE(parseJson(readTextFile(out), records, error)) << out << ": " << error;
-    ASSERT_TRUE(records.isArray()) << out;
+    ASSERT_TRUE(readJsonFile(out, records, error)) << out << ": " << error;
+    ASSERT_TRUE(records.is_array()) << out;
     // 2 views x (lowres, continuous, adaptive with 4 metrics) x 3 backends.
-    EXPECT_EQ(records.array.size(), 2u * 6u * 3u) << out;
+    EXPECT_EQ(records.size(), 2u * 6u * 3u) << out;
 
     size_t compared = 0;
-    for (const JsonValue& r : records.array) {
+    for (const nlohmann::json& r : records) {
         // Every value a string or a number: the records stay flat objects.
-        for (const auto& [key, value] : r.object)
-            EXPECT_TRUE(value.isString() || value.isNumber()) << "\"" << key << "\" is not flat in " << out;
-        const std::string backend = r.stringAt("backend").value_or("?");
-        const std::string mode = r.stringAt("mode").value_or("?");
+        for (const auto& member : r.items())
+            EXPECT_TRUE(member.value().is_string() || member.value().is_number())
+                << "\"" << member.key() << "\" is not flat in " << out;
+        const std::string backend = stringAt(r, "backend").value_or("?");
+        const std::string mode = stringAt(r, "mode").value_or("?");
         const std::string row =
-            backend + " " + r.stringAt("view").value_or("?") + " " + mode + " " + r.stringAt("metric").value_or("?");
+            backend + " " + stringAt(r, "view").value_or("?") + " " + mode + " " + stringAt(r, "metric").value_or("?");
         SCOPED_TRACE(row);
         const std::string pass = "pass:terrain." + mode + ":clipping_invocations";
-        ASSERT_TRUE(r.numberAt(pass)) << "no " << pass;
-        EXPECT_EQ(r.numberAt("clipping_invocations"), r.numberAt(pass));
-        EXPECT_GT(r.numberAt("clipping_invocations").value_or(0.0), 0.0);
+        ASSERT_TRUE(numberAt(r, pass)) << "no " << pass;
+        EXPECT_EQ(numberAt(r, "clipping_invocations"), numberAt(r, pass));
+        EXPECT_GT(numberAt(r, "clipping_invocations").value_or(0.0), 0.0);
         if (mode == "adaptive") {
-            EXPECT_EQ(r.numberAt("tess_max").value_or(0.0), 14.99);
+            EXPECT_EQ(numberAt(r, "tess_max").value_or(0.0), 14.99);
         }
         if (mode == "continuous") {
-            EXPECT_EQ(r.numberAt("continuous_level").value_or(0.0), 14.99);
+            EXPECT_EQ(numberAt(r, "continuous_level").value_or(0.0), 14.99);
         }
-        ASSERT_TRUE(r.numberAt("clipping_invocations_vs_hulldomain")) << "no hulldomain record to compare with";
-        EXPECT_EQ(*r.numberAt("clipping_invocations_vs_hulldomain"), 1.0)
-            << backend << " draws " << r.numberAt("clipping_invocations").value_or(0.0)
+        ASSERT_TRUE(numberAt(r, "clipping_invocations_vs_hulldomain")) << "no hulldomain record to compare with";
+        EXPECT_EQ(*numberAt(r, "clipping_invocations_vs_hulldomain"), 1.0)
+            << backend << " draws " << numberAt(r, "clipping_invocations").value_or(0.0)
             << " triangles where hulldomain draws "
-            << r.numberAt("clipping_invocations").value_or(0.0) / *r.numberAt("clipping_invocations_vs_hulldomain")
+            << numberAt(r, "clipping_invocations").value_or(0.0) / *numberAt(r, "clipping_invocations_vs_hulldomain")
             << "\n  " << commandLine(args);
         if (backend != kReference && mode != "lowres") {
-            EXPECT_GT(r.numberAt("intermediate_bytes").value_or(0.0), 0.0) << "no intermediate buffers reported";
+            EXPECT_GT(numberAt(r, "intermediate_bytes").value_or(0.0), 0.0) << "no intermediate buffers reported";
         }
-        const std::string trace = r.stringAt("trace").value_or("");
+        const std::string trace = stringAt(r, "trace").value_or("");
         EXPECT_EQ(trace, (dir / ("bench-" + backend + ".json")).string());
         compared += backend != kReference;
     }
@@ -378,18 +379,18 @@ TEST(BackendParityBench, BackendAllAgreesOnTrianglesAndWritesATracePerBackend) {
 
     for (const std::string backend : {"hulldomain", "r2vb", "streamout"}) {
         const auto path = dir / ("bench-" + backend + ".json");
-        JsonValue trace;
-        ASSERT_TRUE(parseJson(readTextFile(path), trace, error)) << path << ": " << error;
-        const JsonValue* events = trace.find("traceEvents");
-        ASSERT_TRUE(events && events->isArray()) << path;
+        nlohmann::json trace;
+        ASSERT_TRUE(readJsonFile(path, trace, error)) << path << ": " << error;
+        const nlohmann::json* events = memberOf(trace, "traceEvents");
+        ASSERT_TRUE(events && events->is_array()) << path;
         size_t terrainPasses = 0;
-        for (const JsonValue& e : events->array)
+        for (const nlohmann::json& e : *events)
             terrainPasses +=
-                e.stringAt("cat") == std::string("gpu") && e.stringAt("name").value_or("").rfind("terrain.", 0) == 0;
+                stringAt(e, "cat") == std::string("gpu") && stringAt(e, "name").value_or("").rfind("terrain.", 0) == 0;
         // Every row's warm-up and measured frame: 12 rows x 2 frames.
         EXPECT_GE(terrainPasses, 24u) << path;
-        const JsonValue* meta = trace.find("metadata");
+        const nlohmann::json* meta = memberOf(trace, "metadata");
         ASSERT_TRUE(meta) << path;
-        EXPECT_EQ(meta->stringAt("backend"), backend) << path;
+        EXPECT_EQ(stringAt(*meta, "backend"), backend) << path;
     }
 }

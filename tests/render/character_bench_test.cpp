@@ -4,7 +4,7 @@
 // invariants that hold on any device; GPU times are only checked to be there.
 #include "DemoProcess.h"
 #include "TestFiles.h"
-#include "JsonReader.h"
+#include "JsonFile.h"
 
 #include <gtest/gtest.h>
 
@@ -19,15 +19,15 @@ using namespace tessera::test;
 
 namespace {
 
-double number(const JsonValue& object, const std::string& key) {
-    const auto v = object.numberAt(key);
+double number(const nlohmann::json& object, const std::string& key) {
+    const auto v = numberAt(object, key);
     EXPECT_TRUE(v.has_value()) << "missing number \"" << key << "\"";
     return v.value_or(-1.0);
 }
 
-const JsonValue& member(const JsonValue& object, const std::string& key) {
-    static const JsonValue none;
-    const JsonValue* v = object.find(key);
+const nlohmann::json& member(const nlohmann::json& object, const std::string& key) {
+    static const nlohmann::json none;
+    const nlohmann::json* v = memberOf(object, key);
     EXPECT_NE(v, nullptr) << "missing \"" << key << "\"";
     return v ? *v : none;
 }
@@ -61,9 +61,9 @@ protected:
                                          (dir / "bench.json").string(),
                                          "--out-dir",
                                          dir.string()}));
-        document = new JsonValue();
+        document = new nlohmann::json();
         std::string error;
-        parsed = parseJson(readTextFile(dir / "bench.json"), *document, error);
+        parsed = readJsonFile(dir / "bench.json", *document, error);
         parseError = error;
     }
     static void TearDownTestSuite() {
@@ -73,18 +73,18 @@ protected:
     void SetUp() override {
         ASSERT_EQ(run->exitCode, 0) << run->output;
         ASSERT_TRUE(parsed) << parseError;
-        ASSERT_TRUE(document->isObject());
+        ASSERT_TRUE(document->is_object());
     }
 
     static inline ProcessResult* run = nullptr;
-    static inline JsonValue* document = nullptr;
+    static inline nlohmann::json* document = nullptr;
     static inline bool parsed = false;
     static inline std::string parseError;
 };
 
 TEST_F(CharacterBench, RunsCleanUnderValidation) {
     EXPECT_NE(run->output.find("validation messages: 0"), std::string::npos) << run->output;
-    EXPECT_EQ(document->stringAt("format").value_or(""), "tessera-bench-characters");
+    EXPECT_EQ(stringAt(*document, "format").value_or(""), "tessera-bench-characters");
     EXPECT_EQ(number(*document, "shared_level"), 3.0);
     for (const char* backend : {"hulldomain", "r2vb", "streamout"})
         EXPECT_TRUE(std::filesystem::exists(testOutputDir("character_bench") / ("bench-characters-" + std::string(backend) + ".json")))
@@ -92,16 +92,16 @@ TEST_F(CharacterBench, RunsCleanUnderValidation) {
 }
 
 TEST_F(CharacterBench, EveryBackendDrawsBothPathsWithTheSameTriangles) {
-    const JsonValue& timing = member(*document, "timing");
-    ASSERT_TRUE(timing.isArray());
+    const nlohmann::json& timing = member(*document, "timing");
+    ASSERT_TRUE(timing.is_array());
     std::set<std::string> seen;
     const double characters = number(*document, "characters_per_frame");
     EXPECT_EQ(characters, 2.0); // froblin_1 and CesiumMan
-    const double triangles = number(timing.array.front(), "triangles");
-    const double cage = number(timing.array.front(), "cage_triangles");
+    const double triangles = number(timing.front(), "triangles");
+    const double cage = number(timing.front(), "cage_triangles");
     EXPECT_GT(triangles, cage); // amplification > 1
-    for (const JsonValue& row : timing.array) {
-        const std::string name = row.stringAt("backend").value_or("?") + " " + row.stringAt("path").value_or("?");
+    for (const nlohmann::json& row : timing) {
+        const std::string name = stringAt(row, "backend").value_or("?") + " " + stringAt(row, "path").value_or("?");
         seen.insert(name);
         EXPECT_EQ(number(row, "level"), 3.0) << name;
         EXPECT_EQ(number(row, "frames"), 2.0) << name;
@@ -117,11 +117,11 @@ TEST_F(CharacterBench, EveryBackendDrawsBothPathsWithTheSameTriangles) {
         }
         // Present, not bounded: timings are never asserted.
         EXPECT_GE(number(row, "character_gpu_ms_median"), 0.0) << name;
-        const std::string passes = row.stringAt("passes").value_or("");
-        if (row.stringAt("path") == "two-pass") {
+        const std::string passes = stringAt(row, "passes").value_or("");
+        if (stringAt(row, "path") == "two-pass") {
             EXPECT_NE(passes.find("character.skin"), std::string::npos) << name << ": " << passes;
             EXPECT_NE(passes.find("character.tessellate"), std::string::npos) << name << ": " << passes;
-            EXPECT_TRUE(row.numberAt("single_over_two_pass").has_value()) << name;
+            EXPECT_TRUE(numberAt(row, "single_over_two_pass").has_value()) << name;
         } else {
             EXPECT_NE(passes.find("character.singlePass"), std::string::npos) << name << ": " << passes;
         }
@@ -132,17 +132,17 @@ TEST_F(CharacterBench, EveryBackendDrawsBothPathsWithTheSameTriangles) {
 }
 
 TEST_F(CharacterBench, AmplificationMatchesTheFrameAndThePaper) {
-    const JsonValue& amplification = member(*document, "amplification");
-    const JsonValue& assets = member(amplification, "characters");
-    ASSERT_EQ(assets.array.size(), 2u);
+    const nlohmann::json& amplification = member(*document, "amplification");
+    const nlohmann::json& assets = member(amplification, "characters");
+    ASSERT_EQ(assets.size(), 2u);
     double perFrame = 0.0;
-    for (const JsonValue& a : assets.array) {
+    for (const nlohmann::json& a : assets) {
         EXPECT_EQ(number(a, "triangles_at_shared_level"),
                   number(a, "cage_triangles") * number(a, "triangles_per_cage_triangle"));
         EXPECT_GT(number(a, "triangles_at_paper_level"), number(a, "triangles_at_shared_level"));
         perFrame += number(a, "triangles_at_shared_level");
     }
-    EXPECT_EQ(perFrame, number(member(*document, "timing").array.front(), "triangles"));
+    EXPECT_EQ(perFrame, number(member(*document, "timing").front(), "triangles"));
     // The paper's 5.2K -> 1.6M is about 308x; the closest level gets within a step.
     const double ratio =
         number(amplification, "paper_level_amplification") / number(amplification, "paper_amplification");
@@ -151,11 +151,11 @@ TEST_F(CharacterBench, AmplificationMatchesTheFrameAndThePaper) {
 }
 
 TEST_F(CharacterBench, Table1CountsTheEngineFormats) {
-    const JsonValue& table = member(*document, "table1");
+    const nlohmann::json& table = member(*document, "table1");
     EXPECT_EQ(number(table, "level"), 3.0);
     bool displaced = false;
-    for (const JsonValue& a : member(table, "characters").array) {
-        const std::string name = a.stringAt("asset").value_or("?");
+    for (const nlohmann::json& a : member(table, "characters")) {
+        const std::string name = stringAt(a, "asset").value_or("?");
         EXPECT_EQ(number(a, "cage_bytes"), number(a, "cage_vertices") * 80 + number(a, "cage_triangles") * 12) << name;
         EXPECT_EQ(number(a, "compressed_cage_bytes"), number(a, "cage_vertices") * 16) << name;
         EXPECT_EQ(number(a, "displacement_map_bytes"),
@@ -173,10 +173,10 @@ TEST_F(CharacterBench, Table1CountsTheEngineFormats) {
 }
 
 TEST_F(CharacterBench, CompressionErrorWithinTheIssuesBounds) {
-    const JsonValue& errors = member(*document, "compression_error");
-    ASSERT_EQ(errors.array.size(), 2u);
-    for (const JsonValue& a : errors.array) {
-        const std::string name = a.stringAt("asset").value_or("?");
+    const nlohmann::json& errors = member(*document, "compression_error");
+    ASSERT_EQ(errors.size(), 2u);
+    for (const nlohmann::json& a : errors) {
+        const std::string name = stringAt(a, "asset").value_or("?");
         EXPECT_GT(number(a, "vertices_measured"), 0.0) << name;
         EXPECT_LT(number(a, "max_position_error_relative"), 1e-4) << name;
         EXPECT_LT(number(a, "max_normal_angle_deg"), 1.0) << name;

@@ -11,7 +11,6 @@
 #include "BenchmarkJson.h"
 #include "CharacterDemo.h"
 #include "ImageCompare.h"
-#include "JsonReader.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // reference: the same agents in every tier, for views inside, across and
 // away from the crowd (docs/CROWD.md, section 6), under the validation layer.
 #include "CrowdDemo.h"
-#include "JsonReader.h"
+#include "JsonFile.h"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +20,7 @@ constexpr std::array<const char*, 3> kTiers = {"near", "middle", "far"};
 
 struct TierRun {
     ProcessResult result;
-    JsonValue tiers;
+    nlohmann::json tiers;
     std::string command;
 };
 
@@ -42,17 +42,17 @@ TierRun runTiers(const std::string& backend, const std::string& name, const std:
     run.result = runDemo(args);
     std::string error;
     if (run.result.exitCode == 0) {
-        EXPECT_TRUE(parseJson(readTextFile(json), run.tiers, error)) << error;
+        EXPECT_TRUE(readJsonFile(json, run.tiers, error)) << error;
     }
     return run;
 }
 
-std::vector<double> idsOf(const JsonValue& tiers, const char* source, const char* tier) {
+std::vector<double> idsOf(const nlohmann::json& tiers, const char* source, const char* tier) {
     std::vector<double> ids;
-    const JsonValue* group = tiers.find(source);
-    const JsonValue* list = group ? group->find(tier) : nullptr;
-    if (list && list->isArray())
-        for (const JsonValue& v : list->array) ids.push_back(v.number);
+    const nlohmann::json* group = memberOf(tiers, source);
+    const nlohmann::json* list = group ? memberOf(*group, tier) : nullptr;
+    if (list && list->is_array())
+        for (const nlohmann::json& v : *list) ids.push_back(v.is_number() ? v.get<double>() : 0.0);
     return ids;
 }
 

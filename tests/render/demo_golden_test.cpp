@@ -1,5 +1,6 @@
 // Renders a fixed view headless on every backend under the validation layer
-// and compares it with the approved golden image (tests/golden/<name>.png;
+// and compares it with the approved golden image (tests/golden/goldens.txt
+// names each backend's file, shared where backends render the same image;
 // approve new ones with tools/approve_goldens.sh).
 #include "DemoProcess.h"
 #include "ImageCompare.h"
@@ -7,6 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 
 using namespace tessera;
 using namespace tessera::test;
@@ -20,6 +24,19 @@ const std::vector<std::string> kFixedView = {"--scene", "terrain", "--width", "3
                                              "1800,900,6800,-30,-16"};
 
 class GoldenImage : public ::testing::TestWithParam<std::string> {};
+
+/// The golden file `backend` is compared with, from tests/golden/goldens.txt
+/// ("BACKEND FILE" lines, '#' comments); empty when it names none.
+std::string goldenFileFor(const std::string& backend) {
+    std::ifstream manifest(std::string(TESSERA_GOLDEN_DIR) + "/goldens.txt");
+    std::string line;
+    while (std::getline(manifest, line)) {
+        std::istringstream fields(line);
+        std::string name, file;
+        if (fields >> name >> file && name[0] != '#' && name == backend) return file;
+    }
+    return {};
+}
 
 } // namespace
 
@@ -35,7 +52,9 @@ TEST_P(GoldenImage, MatchesApprovedImageWithNoValidationMessages) {
 
     auto actual = readPng(shot);
     ASSERT_TRUE(actual.ok()) << actual.error().message;
-    const std::string goldenPath = std::string(TESSERA_GOLDEN_DIR) + "/" + backend + ".png";
+    const std::string goldenFile = goldenFileFor(backend);
+    ASSERT_FALSE(goldenFile.empty()) << "tests/golden/goldens.txt names no golden image for " << backend;
+    const std::string goldenPath = std::string(TESSERA_GOLDEN_DIR) + "/" + goldenFile;
     auto golden = readPng(goldenPath);
     ASSERT_TRUE(golden.ok()) << "no golden image for " << backend << " (" << golden.error().message
                              << "); approve " << shot << " with tools/approve_goldens.sh";

@@ -4,18 +4,16 @@
 // the pipeline statistics in --benchmark). Backends that draw only the
 // low-resolution mode refuse the others clearly, and level limits are checked.
 #include "DemoProcess.h"
+#include "JsonFile.h"
 #include "TestFiles.h"
 
 #include "tessera/core/ImageFile.h"
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -34,20 +32,14 @@ std::string joined(const std::vector<std::string>& args) {
     return text;
 }
 
-/// The number after `"key":` that follows the first `"section"` in `json`.
-std::optional<double> numberAfter(const std::string& json, const std::string& section, const std::string& key) {
-    const size_t at = json.find("\"" + section + "\"");
-    if (at == std::string::npos) return std::nullopt;
-    const std::string quotedKey = "\"" + key + "\"";
-    size_t k = json.find(quotedKey, at);
-    if (k == std::string::npos) return std::nullopt;
-    k = json.find(':', k + quotedKey.size());
-    if (k == std::string::npos) return std::nullopt;
-    const char* begin = json.c_str() + k + 1;
-    char* end = nullptr;
-    const double value = std::strtod(begin, &end);
-    if (end == begin) return std::nullopt;
-    return value;
+/// gpuFrame.statsMedianFrame.clippingInvocations of the --benchmark report at `path`.
+std::optional<double> gpuFrameTriangles(const std::string& path) {
+    nlohmann::json report;
+    std::string error;
+    if (!readJsonFile(path, report, error)) return std::nullopt;
+    const nlohmann::json* frame = memberOf(report, "gpuFrame");
+    const nlohmann::json* stats = frame ? memberOf(*frame, "statsMedianFrame") : nullptr;
+    return stats ? numberAt(*stats, "clippingInvocations") : std::nullopt;
 }
 
 struct ModeRun {
@@ -72,7 +64,7 @@ ModeRun runMode(const std::string& name, const std::vector<std::string>& extra) 
     args.insert(args.end(), extra.begin(), extra.end());
     run.command = joined(args);
     run.result = runDemo(args);
-    if (run.result.exitCode == 0) run.triangles = numberAfter(readTextFile(bench), "gpuFrame", "clippingInvocations");
+    if (run.result.exitCode == 0) run.triangles = gpuFrameTriangles(bench);
     return run;
 }
 

@@ -5,6 +5,7 @@
 
 #include "SubdivTestSupport.h"
 
+#include "tessera/core/Random.h"
 #include "tessera/subdiv/DisplacementTiles.h"
 #include "tessera/subdiv/PtexTopology.h"
 
@@ -14,19 +15,6 @@
 #include <vector>
 
 namespace tessera::subdiv::test {
-
-/// SplitMix64, for reproducible random values on every platform.
-struct TestRandom {
-    uint64_t state = 1;
-    uint64_t next() {
-        uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return z ^ (z >> 31);
-    }
-    double unit() { return double(next() >> 11) * 0x1.0p-53; }
-    uint32_t below(uint32_t n) { return uint32_t(next() % n); }
-};
 
 inline PtexTopology topologyOf(const ObjShape& shape) {
     Result<PtexTopology> topology = PtexTopology::create(shape);
@@ -42,7 +30,7 @@ inline DisplacementTiles makeTiles(const PtexTopology& topology, std::vector<uin
 
 /// Random sizes 1 .. maxLog2 per tile, made legal.
 inline std::vector<uint8_t> mixedSizes(const PtexTopology& topology, uint32_t maxLog2, uint64_t seed) {
-    TestRandom random{seed};
+    Random random(seed);
     std::vector<uint8_t> sizes(topology.tileCount());
     for (uint8_t& k : sizes) k = uint8_t(1 + random.below(maxLog2));
     return DisplacementTiles::legalLog2Sizes(topology, std::move(sizes));
@@ -50,9 +38,9 @@ inline std::vector<uint8_t> mixedSizes(const PtexTopology& topology, uint32_t ma
 
 /// Uniform random coefficients in [-1, 1] on every tile.
 inline void randomCoefficients(DisplacementTiles& tiles, uint64_t seed) {
-    TestRandom random{seed};
+    Random random(seed);
     std::vector<float> values(tiles.allCoefficients().size());
-    for (float& v : values) v = float(2.0 * random.unit() - 1.0);
+    for (float& v : values) v = float(2.0 * random.nextDouble() - 1.0);
     tiles.assign(values);
 }
 

@@ -27,13 +27,13 @@ void expectUntouched(const DisplacementTiles& before, const DisplacementTiles& a
 
 // A circular brush of radius r texels around (cx, cy) of one tile, clipped
 // to it; a stroke is a few of them on random tiles, some on tile corners.
-std::vector<CoefficientEdit> brush(const DisplacementTiles& tiles, TestRandom& random) {
+std::vector<CoefficientEdit> brush(const DisplacementTiles& tiles, Random& random) {
     std::vector<CoefficientEdit> edits;
     for (int dab = 0; dab < 3; ++dab) {
         const uint32_t tile = random.below(tiles.tileCount()), n = tiles.tileSize(tile);
         const bool corner = random.below(2) == 0;
-        const double cx = corner ? 0.0 : random.unit() * n, cy = corner ? 0.0 : random.unit() * n;
-        const double r = 1.0 + random.unit() * 3.0, height = random.unit() - 0.5;
+        const double cx = corner ? 0.0 : random.nextDouble() * n, cy = corner ? 0.0 : random.nextDouble() * n;
+        const double r = 1.0 + random.nextDouble() * 3.0, height = random.nextDouble() - 0.5;
         const auto values = tiles.coefficients(tile);
         for (uint32_t y = 0; y < n; ++y)
             for (uint32_t x = 0; x < n; ++x) {
@@ -45,7 +45,7 @@ std::vector<CoefficientEdit> brush(const DisplacementTiles& tiles, TestRandom& r
 }
 
 TEST(DisplacementEdit, MatchesAFullRebuildAndReportsWhatChanged) {
-    TestRandom random{42};
+    Random random(42);
     for (TileSet& set : tileSets()) {
         DisplacementTiles& tiles = set.tiles;
         size_t rewritten = 0, strokes = 0;

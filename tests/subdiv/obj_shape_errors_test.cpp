@@ -6,13 +6,13 @@
 #include "ObjShapeTestFiles.h"
 #include "TestFiles.h"
 
+#include "tessera/core/Random.h"
 #include "tessera/subdiv/ObjShape.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
-#include <random>
 
 using namespace tessera;
 using namespace tessera::subdiv;
@@ -195,7 +195,7 @@ TEST(ObjShapeErrors, TruncationsAndByteFlipsOfTheShapesNeverCrash) {
             EXPECT_EQ(message.find('\n'), std::string::npos) << message;
         }
     };
-    std::mt19937 random(20240611);
+    Random random(20240611);
     // Bytes that matter to the syntax, more often than any other byte.
     std::string syntax = "0123456789-+./#\n \t\refvtn";
     syntax.push_back('\0');
@@ -207,10 +207,10 @@ TEST(ObjShapeErrors, TruncationsAndByteFlipsOfTheShapesNeverCrash) {
         for (size_t length = 0; length <= text.size(); length += step) feed(text.substr(0, length), name);
         for (int trial = 0; trial < 400; ++trial) {
             std::string mutated = text;
-            const int flips = 1 + int(random() % 4);
+            const int flips = 1 + int(random.below(4));
             for (int i = 0; i < flips; ++i) {
-                const size_t at = random() % mutated.size();
-                mutated[at] = (random() % 2) ? syntax[random() % syntax.size()] : char(random() % 256);
+                const size_t at = random.below(uint32_t(mutated.size()));
+                mutated[at] = random.below(2) ? syntax[random.below(uint32_t(syntax.size()))] : char(random.below(256));
             }
             feed(mutated, name);
         }

@@ -2,8 +2,7 @@
 /// @file BenchmarkJson.h
 /// Figures read back from the demo's --benchmark JSON report.
 
-#include "JsonReader.h"
-#include "TestFiles.h"
+#include "JsonFile.h"
 
 #include <cstdint>
 #include <optional>
@@ -16,14 +15,14 @@ namespace tessera::test {
 /// the file or the pass's pipeline statistics are missing.
 inline std::optional<uint64_t> passTriangles(const std::string& path, const std::string& passName,
                                              std::string& error) {
-    JsonValue report;
-    if (!parseJson(readTextFile(path), report, error)) return std::nullopt;
-    const JsonValue* passes = report.find("passes");
-    if (passes && passes->isArray())
-        for (const JsonValue& pass : passes->array) {
-            if (pass.stringAt("name") != passName) continue;
-            const JsonValue* stats = pass.find("statsMedianFrame");
-            if (auto n = stats ? stats->numberAt("clippingInvocations") : std::nullopt) return uint64_t(*n);
+    nlohmann::json report;
+    if (!readJsonFile(path, report, error)) return std::nullopt;
+    const nlohmann::json* passes = memberOf(report, "passes");
+    if (passes && passes->is_array())
+        for (const nlohmann::json& pass : *passes) {
+            if (stringAt(pass, "name") != passName) continue;
+            const nlohmann::json* stats = memberOf(pass, "statsMedianFrame");
+            if (auto n = stats ? numberAt(*stats, "clippingInvocations") : std::nullopt) return uint64_t(*n);
         }
     error = path + ": no pipeline statistics for pass " + passName;
     return std::nullopt;

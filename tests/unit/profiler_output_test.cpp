@@ -3,145 +3,54 @@
 #include "tessera/profiler/TraceWriter.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
-#include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
-#include <string_view>
 #include <unistd.h>
 
 namespace tessera::profiler {
 namespace {
 
-/// Strict RFC 8259 recogniser: true when `text` is exactly one JSON value.
-class JsonValidator {
-public:
-    static bool isValid(std::string_view text) {
-        JsonValidator v(text);
-        v.skipSpace();
-        if (!v.parseValue(0)) return false;
-        v.skipSpace();
-        return v.mPos == text.size();
+using Json = nlohmann::ordered_json; // keeps the writers' member order, which some checks read
+
+/// True when `actual` has every member of `expected` with an equal value,
+/// recursively through objects; with `exact`, and no other members.
+bool covers(const Json& actual, const Json& expected, bool exact) {
+    if (!expected.is_object()) return actual == expected;
+    if (!actual.is_object() || (exact && actual.size() != expected.size())) return false;
+    for (const auto& [key, value] : expected.items()) {
+        auto it = actual.find(key);
+        if (it == actual.end() || !covers(*it, value, exact)) return false;
     }
+    return true;
+}
 
-private:
-    explicit JsonValidator(std::string_view text) : mText(text) {}
+/// Index of the first of the trace's events that covers `expected` (see
+/// covers), or -1 when none does.
+long eventIndex(const Json& trace, const Json& expected, bool exact = false) {
+    const Json& events = trace.at("traceEvents");
+    for (size_t k = 0; k < events.size(); ++k)
+        if (covers(events[k], expected, exact)) return long(k);
+    return -1;
+}
 
-    bool parseValue(int depth) {
-        if (depth > 256 || mPos >= mText.size()) return false;
-        switch (mText[mPos]) {
-        case '{': return parseContainer(depth, '}', true);
-        case '[': return parseContainer(depth, ']', false);
-        case '"': return parseString();
-        case 't': return literal("true");
-        case 'f': return literal("false");
-        case 'n': return literal("null");
-        default: return parseNumber();
-        }
-    }
+/// The event that is exactly `expected`, member for member.
+bool hasExactEvent(const Json& trace, const char* expected) {
+    return eventIndex(trace, Json::parse(expected), true) >= 0;
+}
 
-    bool parseContainer(int depth, char close, bool isObject) {
-        ++mPos;
-        skipSpace();
-        if (peek() == close) {
-            ++mPos;
-            return true;
-        }
-        for (;;) {
-            skipSpace();
-            if (isObject) {
-                if (peek() != '"' || !parseString()) return false;
-                skipSpace();
-                if (peek() != ':') return false;
-                ++mPos;
-                skipSpace();
-            }
-            if (!parseValue(depth + 1)) return false;
-            skipSpace();
-            if (peek() == close) {
-                ++mPos;
-                return true;
-            }
-            if (peek() != ',') return false;
-            ++mPos;
-        }
-    }
+/// An event with at least the members of `expected`.
+bool hasEventWith(const Json& trace, const char* expected) { return eventIndex(trace, Json::parse(expected)) >= 0; }
 
-    bool parseString() {
-        ++mPos;
-        while (mPos < mText.size()) {
-            auto c = static_cast<unsigned char>(mText[mPos++]);
-            if (c == '"') return true;
-            if (c < 0x20) return false;
-            if (c != '\\') continue;
-            char e = peek();
-            ++mPos;
-            if (e == 'u') {
-                for (int i = 0; i < 4; ++i, ++mPos) {
-                    if (!std::isxdigit(static_cast<unsigned char>(peek()))) return false;
-                }
-            } else if (std::string_view("\"\\/bfnrt").find(e) == std::string_view::npos) {
-                return false;
-            }
-        }
-        return false;
-    }
-
-    bool parseNumber() {
-        if (peek() == '-') ++mPos;
-        if (peek() == '0') {
-            ++mPos;
-        } else if (!digits()) {
-            return false;
-        }
-        if (peek() == '.') {
-            ++mPos;
-            if (!digits()) return false;
-        }
-        if (peek() == 'e' || peek() == 'E') {
-            ++mPos;
-            if (peek() == '+' || peek() == '-') ++mPos;
-            if (!digits()) return false;
-        }
-        return true;
-    }
-
-    bool digits() {
-        size_t start = mPos;
-        while (std::isdigit(static_cast<unsigned char>(peek()))) ++mPos;
-        return mPos > start;
-    }
-
-    bool literal(std::string_view word) {
-        if (mText.substr(mPos, word.size()) != word) return false;
-        mPos += word.size();
-        return true;
-    }
-
-    char peek() const { return mPos < mText.size() ? mText[mPos] : '\0'; }
-    void skipSpace() {
-        while (mPos < mText.size() && std::string_view(" \t\n\r").find(mText[mPos]) != std::string_view::npos) ++mPos;
-    }
-
-    std::string_view mText;
-    size_t mPos = 0;
-};
-
-TEST(JsonValidator, AcceptsValidAndRejectsInvalidDocuments) {
-    EXPECT_TRUE(JsonValidator::isValid(R"({"a":[1,-0.5,2e+3,true,null,"x\n\u00e9"],"b":{}})"));
-    EXPECT_TRUE(JsonValidator::isValid(" [ ] "));
-    EXPECT_FALSE(JsonValidator::isValid(R"({"a":1,})"));
-    EXPECT_FALSE(JsonValidator::isValid(R"([1 2])"));
-    EXPECT_FALSE(JsonValidator::isValid(R"({"a" 1})"));
-    EXPECT_FALSE(JsonValidator::isValid(R"(["\x"])"));
-    EXPECT_FALSE(JsonValidator::isValid("[\"a\nb\"]"));
-    EXPECT_FALSE(JsonValidator::isValid("[01]"));
-    EXPECT_FALSE(JsonValidator::isValid("[1.]"));
-    EXPECT_FALSE(JsonValidator::isValid("[nan]"));
-    EXPECT_FALSE(JsonValidator::isValid("{} {}"));
-    EXPECT_FALSE(JsonValidator::isValid("[1"));
+/// The benchmark report's series (a pass, or the GPU or CPU frame) named `name`.
+const Json* seriesNamed(const Json& report, const std::string& name) {
+    for (const Json& pass : report.at("passes"))
+        if (pass.at("name") == name) return &pass;
+    return nullptr;
 }
 
 std::string readFile(const std::filesystem::path& path) {
@@ -194,41 +103,43 @@ TEST(TraceWriter, WritesValidChromeTraceWithTracksPhasesAndMicroseconds) {
     metadata.width = 1920;
     std::string trace = makeChromeTrace(profiler, metadata);
 
-    EXPECT_TRUE(JsonValidator::isValid(trace)) << trace;
-    EXPECT_EQ(trace.rfind(R"({"displayTimeUnit":"ms","traceEvents":[)", 0), 0u);
-    EXPECT_NE(trace.find(R"("metadata":{"application":"tessera","backend":"pn-triangles","device":"Test GPU")"),
-              std::string::npos);
-    EXPECT_NE(trace.find(R"("width":1920,"height":0})"), std::string::npos);
+    ASSERT_TRUE(Json::accept(trace)) << trace;
+    const Json doc = Json::parse(trace);
+    // The document opens with the display unit, then the events.
+    ASSERT_GE(doc.size(), 2u);
+    EXPECT_EQ(doc.begin().key(), "displayTimeUnit");
+    EXPECT_EQ(doc.at("displayTimeUnit"), "ms");
+    EXPECT_EQ(std::next(doc.begin()).key(), "traceEvents");
+    EXPECT_TRUE(covers(doc.at("metadata"),
+                       Json::parse(R"({"application":"tessera","backend":"pn-triangles","device":"Test GPU",)"
+                                   R"("width":1920,"height":0})"),
+                       false))
+        << doc.at("metadata");
+    // width and height close the metadata.
+    EXPECT_EQ(std::prev(doc.at("metadata").end()).key(), "height");
 
     // Process and track names.
-    EXPECT_NE(trace.find(R"({"name":"process_name","ph":"M","pid":1,"tid":0,"args":{"name":"tessera"}})"),
-              std::string::npos);
-    EXPECT_NE(trace.find(R"({"name":"thread_name","ph":"M","pid":1,"tid":1,"args":{"name":"CPU main"}})"),
-              std::string::npos);
-    EXPECT_NE(trace.find(R"("tid":3,"args":{"name":"CPU worker 2"}})"), std::string::npos);
-    EXPECT_NE(trace.find(R"json("tid":1000000,"args":{"name":"GPU (Test GPU)"}})json"), std::string::npos);
+    EXPECT_TRUE(hasExactEvent(doc, R"({"name":"process_name","ph":"M","pid":1,"tid":0,"args":{"name":"tessera"}})"));
+    EXPECT_TRUE(hasExactEvent(doc, R"({"name":"thread_name","ph":"M","pid":1,"tid":1,"args":{"name":"CPU main"}})"));
+    EXPECT_TRUE(hasEventWith(doc, R"({"tid":3,"args":{"name":"CPU worker 2"}})"));
+    EXPECT_TRUE(hasEventWith(doc, R"json({"tid":1000000,"args":{"name":"GPU (Test GPU)"}})json"));
 
     // Complete events in microseconds: 2,000,000 ns -> 2000, 1,500,000 ns -> 1500.
-    EXPECT_NE(trace.find(R"({"name":"terrain","cat":"gpu","ph":"X","pid":1,"tid":1000000,"ts":2000,"dur":1500,)"
-                         R"("args":{"frame":7,"inputAssemblyVertices":0,"inputAssemblyPrimitives":16,)"),
-              std::string::npos);
-    EXPECT_NE(trace.find(R"("tessEvaluationInvocations":300,"computeShaderInvocations":0,"triangles":100}})"),
-              std::string::npos);
-    EXPECT_NE(trace.find(R"("name":"decode","cat":"cpu","ph":"X","pid":1,"tid":3,"ts":1200,"dur":1.234,)"),
-              std::string::npos);
-    EXPECT_NE(trace.find(R"("name":"shadows \"cascade\"")"), std::string::npos);
-    EXPECT_NE(trace.find(R"({"name":"blit","cat":"gpu","ph":"X","pid":1,"tid":1000000,"ts":3900,"dur":10,"args":{"frame":7}})"),
-              std::string::npos);
+    EXPECT_TRUE(hasEventWith(doc, R"({"name":"terrain","cat":"gpu","ph":"X","pid":1,"tid":1000000,"ts":2000,"dur":1500,)"
+                                  R"("args":{"frame":7,"inputAssemblyVertices":0,"inputAssemblyPrimitives":16,)"
+                                  R"("tessEvaluationInvocations":300,"computeShaderInvocations":0,"triangles":100}})"));
+    EXPECT_TRUE(hasEventWith(doc, R"({"name":"decode","cat":"cpu","ph":"X","pid":1,"tid":3,"ts":1200,"dur":1.234})"));
+    EXPECT_TRUE(hasEventWith(doc, R"({"name":"shadows \"cascade\""})"));
+    EXPECT_TRUE(hasExactEvent(
+        doc, R"({"name":"blit","cat":"gpu","ph":"X","pid":1,"tid":1000000,"ts":3900,"dur":10,"args":{"frame":7}})"));
     // Parent precedes child despite being recorded after it.
-    EXPECT_LT(trace.find(R"("name":"parent")"), trace.find(R"("name":"child")"));
+    EXPECT_LT(eventIndex(doc, {{"name", "parent"}}), eventIndex(doc, {{"name", "child"}}));
 
     // Recorded and derived counters.
-    EXPECT_NE(trace.find(R"({"name":"memory MiB","ph":"C","pid":1,"ts":2500,"args":{"value":512.5}})"),
-              std::string::npos);
-    EXPECT_NE(trace.find(R"({"name":"triangles","ph":"C","pid":1,"ts":2000,"args":{"value":150}})"),
-              std::string::npos);
-    EXPECT_NE(trace.find(R"({"name":"tess-evaluation invocations","ph":"C","pid":1,"ts":2000,"args":{"value":500}})"),
-              std::string::npos);
+    EXPECT_TRUE(hasExactEvent(doc, R"({"name":"memory MiB","ph":"C","pid":1,"ts":2500,"args":{"value":512.5}})"));
+    EXPECT_TRUE(hasExactEvent(doc, R"({"name":"triangles","ph":"C","pid":1,"ts":2000,"args":{"value":150}})"));
+    EXPECT_TRUE(hasExactEvent(
+        doc, R"({"name":"tess-evaluation invocations","ph":"C","pid":1,"ts":2000,"args":{"value":500}})"));
 }
 
 TEST(TraceWriter, RecordedFramesAppearOnTheirThreadTrack) {
@@ -237,16 +148,19 @@ TEST(TraceWriter, RecordedFramesAppearOnTheirThreadTrack) {
     profiler.beginFrame(4);
     profiler.endFrame();
     std::string trace = makeChromeTrace(profiler, {});
-    EXPECT_TRUE(JsonValidator::isValid(trace)) << trace;
-    std::string tid = std::to_string(Profiler::currentThreadId() + 1);
-    EXPECT_NE(trace.find(R"({"name":"frame","cat":"frame","ph":"X","pid":1,"tid":)" + tid), std::string::npos);
-    EXPECT_NE(trace.find(R"("args":{"frame":4}})"), std::string::npos);
+    ASSERT_TRUE(Json::accept(trace)) << trace;
+    const Json doc = Json::parse(trace);
+    const uint32_t tid = Profiler::currentThreadId() + 1;
+    EXPECT_GE(eventIndex(doc, {{"name", "frame"}, {"cat", "frame"}, {"ph", "X"}, {"pid", 1}, {"tid", tid},
+                               {"args", {{"frame", 4}}}}),
+              0)
+        << trace;
     EXPECT_EQ(trace.find("GPU"), std::string::npos); // No passes, no GPU track.
 }
 
 TEST(TraceWriter, EmptyProfilerGivesValidTrace) {
     Profiler profiler;
-    EXPECT_TRUE(JsonValidator::isValid(makeChromeTrace(profiler, {})));
+    EXPECT_TRUE(Json::accept(makeChromeTrace(profiler, {})));
 }
 
 TEST(TraceWriter, WritesFileAndReportsBadPath) {
@@ -274,19 +188,26 @@ TEST(BenchmarkReport, WritesValidJsonWithPerFrameValues) {
     BenchmarkSummary summary = summarize(profiler);
     std::string report = makeBenchmarkJson(summary, info, profiler);
 
-    EXPECT_TRUE(JsonValidator::isValid(report)) << report;
-    EXPECT_NE(report.find(R"("scene": "canyon")"), std::string::npos);
-    EXPECT_NE(report.find(R"("warmupFrames": 10)"), std::string::npos);
-    EXPECT_NE(report.find("\"frames\": 2,\n  \"gpuFrame\""), std::string::npos);
-    EXPECT_NE(report.find("\"name\": \"terrain\",\n      \"samples\": 2,\n      \"minMs\": 1.5,\n"
-                          "      \"medianMs\": 2,\n      \"maxMs\": 2.5,\n      \"meanMs\": 2,"),
-              std::string::npos)
-        << report;
-    EXPECT_NE(report.find("\"frameIndices\": [\n        7,\n        8\n      ],\n"
-                          "      \"frameMs\": [\n        1.5,\n        2.5\n      ]"),
-              std::string::npos)
-        << report;
-    EXPECT_NE(report.find("\"statsMedianFrame\": null"), std::string::npos); // blit, cpu frame.
+    ASSERT_TRUE(Json::accept(report)) << report;
+    const Json doc = Json::parse(report);
+    EXPECT_EQ(doc.at("info").at("scene"), "canyon");
+    EXPECT_EQ(doc.at("info").at("warmupFrames"), 10);
+    EXPECT_EQ(doc.at("frames"), 2);
+    // The summary's frame count comes just before the GPU frame's series.
+    auto frames = doc.find("frames");
+    ASSERT_NE(frames, doc.end());
+    EXPECT_EQ(std::next(frames).key(), "gpuFrame");
+    const Json* terrain = seriesNamed(doc, "terrain");
+    ASSERT_NE(terrain, nullptr) << report;
+    EXPECT_TRUE(covers(*terrain,
+                       Json::parse(R"({"samples":2,"minMs":1.5,"medianMs":2,"maxMs":2.5,"meanMs":2,)"
+                                   R"("frameIndices":[7,8],"frameMs":[1.5,2.5]})"),
+                       false))
+        << *terrain;
+    // blit has no statistics, nor has the CPU frame.
+    EXPECT_TRUE(doc.at("cpuFrame").at("statsMedianFrame").is_null()) << report;
+    ASSERT_NE(seriesNamed(doc, "blit"), nullptr);
+    EXPECT_TRUE(seriesNamed(doc, "blit")->at("statsMedianFrame").is_null());
 
     std::filesystem::path path = tempPath("bench.json");
     Status status = writeBenchmarkJson(summary, info, profiler, path);

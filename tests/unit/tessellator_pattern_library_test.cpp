@@ -3,6 +3,7 @@
 // with the shaders' own code (TessPattern.h compiled as C++) must give
 // exactly Tessellator's triangles, which the GPU tests show are the
 // hardware's.
+#include "tessera/core/Random.h"
 #include "tessera/shaders/TessPattern.h"
 #include "tessera/tessellator/PatternLibrary.h"
 #include "tessera/tessellator/Tessellator.h"
@@ -11,7 +12,6 @@
 
 #include <algorithm>
 #include <array>
-#include <random>
 #include <vector>
 
 using namespace tessera;
@@ -99,9 +99,9 @@ TEST(TessellatorPatternLibrary, UniformLevelsMatchTheTessellator) {
 }
 
 TEST(TessellatorPatternLibrary, MixedLevelsMatchTheTessellator) {
-    std::mt19937 rng(4u);
-    std::uniform_real_distribution<float> level(0.5f, TS_EMU_MAX_LEVEL);
-    std::uniform_int_distribution<int> special(0, 5);
+    Random rng(4u);
+    auto level = [](Random& r) { return r.range(0.5f, TS_EMU_MAX_LEVEL); };
+    auto special = [](Random& r) { return int(r.below(6)); };
     for (int i = 0; i < 3000; ++i) {
         TessFactors f;
         // Some levels exactly 1 or exactly odd integers: the edges of the
@@ -109,7 +109,7 @@ TEST(TessellatorPatternLibrary, MixedLevelsMatchTheTessellator) {
         auto pick = [&] {
             switch (special(rng)) {
             case 0: return 1.0f;
-            case 1: return float(2 * (rng() % 7) + 1);
+            case 1: return float(2 * rng.below(7) + 1);
             default: return level(rng);
             }
         };

@@ -2,6 +2,7 @@
 // bounds, exact edges, watertightness and winding. The values below were also
 // checked against lavapipe's tessellator through transform feedback (point
 // sets, triangle counts, evaluation invocations and oriented triangles).
+#include "tessera/core/Random.h"
 #include "tessera/tessellator/Tessellator.h"
 
 #include <gtest/gtest.h>
@@ -9,12 +10,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 #include <set>
 #include <utility>
 #include <vector>
 
 using namespace tessera::tessellator;
+using tessera::Random;
 
 namespace {
 
@@ -80,12 +81,13 @@ struct RandomCase {
 };
 
 std::vector<RandomCase> randomCases(size_t count) {
-    std::mt19937 rng(20240611u);
-    std::uniform_real_distribution<float> low(0.5f, 20.0f), wide(0.5f, 70.0f);
+    Random rng(20240611u);
+    auto low = [](Random& r) { return r.range(0.5f, 20.0f); };
+    auto wide = [](Random& r) { return r.range(0.5f, 70.0f); };
     std::vector<RandomCase> cases;
     for (size_t i = 0; i < count; ++i) {
-        auto level = [&] { return rng() % 4 == 0 ? wide(rng) : low(rng); };
-        RandomCase c{kDomains[rng() % 2], kPartitionings[rng() % 3], {}};
+        auto level = [&] { return rng.below(4) == 0 ? wide(rng) : low(rng); };
+        RandomCase c{kDomains[rng.below(2)], kPartitionings[rng.below(3)], {}};
         for (auto& o : c.factors.outer) o = level();
         for (auto& in : c.factors.inner) in = level();
         cases.push_back(c);
@@ -221,8 +223,8 @@ TEST(TessellatorPattern, PointsStayInTheDomainAndTrianglesAreProper) {
 }
 
 TEST(TessellatorPattern, OuterEdgesHaveTheRoundedLevelsPoints) {
-    std::mt19937 rng(7u);
-    std::uniform_real_distribution<float> level(1.0f, 40.0f);
+    Random rng(7u);
+    auto level = [](Random& r) { return r.range(1.0f, 40.0f); };
     for (int i = 0; i < 300; ++i) {
         for (Partitioning p : kPartitionings) {
             TessFactors f{{level(rng), level(rng), level(rng), level(rng)}, {3.0f + level(rng), 3.0f + level(rng)}};
@@ -249,8 +251,8 @@ TEST(TessellatorPattern, SharedEdgesAreWatertight) {
     // Two quads side by side: the left one's u = 1 edge is the right one's
     // u = 0 edge. With the same level there, the points must be identical
     // whatever the other levels, and a triangle edge with that level too.
-    std::mt19937 rng(11u);
-    std::uniform_real_distribution<float> level(1.0f, 64.0f);
+    Random rng(11u);
+    auto level = [](Random& r) { return r.range(1.0f, 64.0f); };
     for (int i = 0; i < 300; ++i) {
         for (Partitioning p : kPartitionings) {
             const float shared = level(rng);

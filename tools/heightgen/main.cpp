@@ -3,8 +3,8 @@
 // command line.
 
 #include "HeightGenOptions.h"
-#include "ProgressBar.h"
 
+#include "tessera/core/ProgressBar.h"
 #include "tessera/terrain/HeightMapGenerator.h"
 #include "tessera/terrain/HeightMapIO.h"
 
@@ -46,12 +46,11 @@ int main(int argc, char** argv) {
     settings.threadCount = options.threads;
 
     const auto start = std::chrono::steady_clock::now();
-    heightgen::ProgressBar bar(stderr);
-    terrain::HeightMapProgress progress;
-    if (!options.quiet)
-        progress = [&bar](std::string_view stage, float fraction) { bar.update(stage, fraction); };
-    std::vector<uint16_t> samples = terrain::generateHeightMap(settings, progress);
-    if (!options.quiet) bar.finish();
+    // A log gets a line per stage and per quarter of the run.
+    core::ProgressBar bar(stderr, "tessera-heightgen", options.quiet, 25);
+    std::vector<uint16_t> samples = terrain::generateHeightMap(
+        settings, [&bar](std::string_view stage, float fraction) { bar.update(stage, fraction); });
+    bar.finish();
 
     Status saved = terrain::saveHeightMapPng16(options.out, options.size, options.size, samples);
     if (!saved) {

@@ -1,13 +1,27 @@
 #include "tessera/core/ImageFile.h"
 
 #include <stb_image.h>
-#include <stb_image_write.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
-#include <fstream>
 
 namespace tessera {
+
+Status writePng(const std::filesystem::path& path, const PngPixels& pixels) {
+    const std::string name = path.string();
+    auto bytes = encodePng(pixels);
+    if (!bytes) return fail(name, ": ", bytes.error().message);
+    std::FILE* file = std::fopen(name.c_str(), "wb");
+    if (!file) return fail(name, ": cannot open for writing: ", std::strerror(errno));
+    bool ioError = std::fwrite(bytes->data(), 1, bytes->size(), file) != bytes->size();
+    // fclose flushes; a full disk often shows up only here.
+    ioError |= std::fclose(file) != 0;
+    if (!ioError) return {};
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+    return fail(name, ": write error (disk full?)");
+}
 
 Status writePng(const std::filesystem::path& path, const Rgba8Image& image) {
     if (image.width == 0 || image.height == 0 || image.pixels.size() != size_t(image.width) * image.height * 4)
@@ -16,14 +30,7 @@ Status writePng(const std::filesystem::path& path, const Rgba8Image& image) {
         std::error_code ec;
         std::filesystem::create_directories(path.parent_path(), ec);
     }
-    // stb reports no reason on failure; probe the path ourselves for one.
-    {
-        std::ofstream probe(path, std::ios::binary);
-        if (!probe) return fail(path.string(), ": cannot open for writing: ", std::strerror(errno));
-    }
-    if (!stbi_write_png(path.c_str(), int(image.width), int(image.height), 4, image.pixels.data(), int(image.width * 4)))
-        return fail(path.string(), ": failed to write the PNG");
-    return {};
+    return writePng(path, PngPixels{image.width, image.height, PngLayout::Rgba8, image.pixels.data()});
 }
 
 Result<Rgba8Image> readPng(const std::filesystem::path& path) {

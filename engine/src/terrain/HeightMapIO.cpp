@@ -1,6 +1,6 @@
 #include "tessera/terrain/HeightMapIO.h"
 
-#include "PngWriter16.h"
+#include "tessera/core/ImageFile.h"
 
 #include <cstring>
 #include <fstream>
@@ -90,7 +90,7 @@ Status saveHeightMapPng16(const std::filesystem::path& path, uint32_t width, uin
     if (samples.size() != size_t(width) * height)
         return fail(name, ": ", std::to_string(samples.size()), " samples given for a ",
                     std::to_string(width), "x", std::to_string(height), " height map");
-    return writePngGray16(path, width, height, samples.data());
+    return writePng(path, PngPixels{width, height, PngLayout::Gray16, samples.data()});
 }
 
 } // namespace tessera::terrain

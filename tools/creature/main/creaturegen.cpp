@@ -5,13 +5,13 @@
 
 #include "CreatureGenOptions.h"
 #include "GlbMeshBytes.h"
-#include "CreatureProgress.h"
 
 #include "creature/CreatureGenerator.h"
 #include "creature/DisplacementBaker.h"
 #include "creature/GlbExporter.h"
 #include "creature/SubdivBaker.h"
 #include "tessera/assets/GltfLoader.h"
+#include "tessera/core/ProgressBar.h"
 
 #include <nlohmann/json.hpp>
 
@@ -93,10 +93,9 @@ int main(int argc, char** argv) {
     }
 
     const auto start = std::chrono::steady_clock::now();
-    CreatureProgress bar(stderr);
-    auto show = [&](const char* stage, float f) {
-        if (!o.quiet) bar.update(stage, overall(stage, f));
-    };
+    // A log gets one line per stage.
+    core::ProgressBar bar(stderr, "tessera-creaturegen", o.quiet);
+    auto show = [&](const char* stage, float f) { bar.update(stage, overall(stage, f)); };
     CreatureOptions creatureOptions;
     creatureOptions.seed = o.seed;
     creatureOptions.sculptTriangles = o.sculptTriangles;
@@ -108,7 +107,7 @@ int main(int argc, char** argv) {
     auto bakedOrError = bakeDisplacement(creature.asset.cage, creature.sculpt, bakeOptions,
                                          [&](float f) { show("bake", f); });
     if (!bakedOrError) {
-        if (!o.quiet) bar.finish();
+        bar.finish();
         std::fprintf(stderr, "tessera-creaturegen: %s\n", bakedOrError.error().message.c_str());
         return 1;
     }
@@ -145,13 +144,13 @@ int main(int argc, char** argv) {
     auto subdivBaked = bakeSubdivTiles(o.out, creature.sculpt, baked.stats.texelsCovered, creature.asset.cage);
     Status tilesWritten = subdivBaked ? subdiv::writeCageTiles(tilesFile, subdivBaked->file) : Status(subdivBaked.error());
     if (!tilesWritten) {
-        if (!o.quiet) bar.finish();
+        bar.finish();
         std::fprintf(stderr, "tessera-creaturegen: %s\n", tilesWritten.error().message.c_str());
         return 1;
     }
     const SubdivBakeStats& cc = subdivBaked->stats;
     show("subdiv", 1.0f);
-    if (!o.quiet) bar.finish();
+    bar.finish();
     uint64_t dracoBytes = o.uncompressed ? *otherBytes : *mainBytes;
     uint64_t plainBytes = o.uncompressed ? *mainBytes : *otherBytes;
 

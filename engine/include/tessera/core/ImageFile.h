@@ -1,6 +1,15 @@
 #pragma once
 /// @file ImageFile.h
-/// RGBA8 images on disk (PNG), for screenshots, golden images and diffs.
+/// PNG images: the one encoder of the code base (screenshots, golden images
+/// and diffs, height maps, the maps embedded in `.glb` characters) and the
+/// reader of RGBA8 files.
+///
+/// Encoding is libpng's (stb_image_write cannot write 16-bit samples, which
+/// height maps and displacement maps need). Every setting libpng would choose
+/// by default or by the clock is pinned (zlib level 6, the adaptive filter
+/// heuristic, no time or text chunks), so the bytes depend only on the pixels
+/// and the zlib build: generated content is byte-identical run to run.
+/// Decoding is stb_image's, the one decoder (it also reads glTF textures).
 
 #include "tessera/core/Result.h"
 
@@ -16,8 +25,37 @@ struct Rgba8Image {
     std::vector<uint8_t> pixels; ///< width * height * 4 bytes, rows top to bottom
 };
 
-/// Writes an RGBA8 PNG; the error names the file.
+/// The sample layouts the encoder writes.
+enum class PngLayout {
+    Rgba8,  ///< 4 bytes a pixel: red, green, blue, alpha
+    Gray8,  ///< 1 byte a pixel
+    Gray16, ///< one uint16_t a pixel, in the host's byte order (PNG's big-endian is the encoder's job)
+};
+
+/// Pixels to encode, borrowed: `width * height` pixels of `layout`, tightly
+/// packed, rows top to bottom.
+struct PngPixels {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    PngLayout layout = PngLayout::Rgba8;
+    const void* data = nullptr;
+};
+
+/// Bytes per pixel of `layout` (4, 1 or 2).
+uint32_t bytesPerPixel(PngLayout layout);
+
+/// Encodes `pixels` as a PNG file's bytes, in memory. Fails on an empty image,
+/// null data or a side above 2^31 - 1; the message does not name a file.
+Result<std::vector<uint8_t>> encodePng(const PngPixels& pixels);
+
+/// Encodes `pixels` and writes them to `path`, overwriting it. The folder must
+/// exist. On failure the partial file is removed and the Error names it.
+Status writePng(const std::filesystem::path& path, const PngPixels& pixels);
+
+/// Writes an RGBA8 PNG, creating the parent folders first (screenshots and
+/// diffs name folders freely); the error names the file.
 Status writePng(const std::filesystem::path& path, const Rgba8Image& image);
+
 /// Reads any PNG as RGBA8; the error names the file and the problem.
 Result<Rgba8Image> readPng(const std::filesystem::path& path);
 

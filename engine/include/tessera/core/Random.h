@@ -2,10 +2,13 @@
 /// @file Random.h
 /// A small deterministic PRNG (PCG32, O'Neill 2014).
 ///
-/// Every seeded feature in Tessera (camera paths, terrain generation, meteor
-/// showers, crowds) uses this instead of <random>'s distributions, whose output
-/// is implementation-defined: the same seed must give the same bytes with any
-/// standard library.
+/// The one random generator of the code base: every seeded feature (camera
+/// paths, terrain generation, meteor showers, crowds, procedural displacement,
+/// the creature generator) and every test that wants random input uses this
+/// instead of <random>'s distributions, whose output is
+/// implementation-defined: the same seed must give the same bytes with any
+/// standard library. (Noise lattices hash their coordinates instead, since
+/// they are read in any order; that is a hash, not a generator.)
 
 #include <cstdint>
 
@@ -35,6 +38,15 @@ public:
 
     /// Uniform float in [lo, hi).
     float range(float lo, float hi) { return lo + (hi - lo) * nextFloat(); }
+
+    /// Next uniformly distributed 64-bit value (two 32-bit draws, high first).
+    uint64_t nextU64() {
+        const uint64_t high = nextU32();
+        return (high << 32) | nextU32();
+    }
+
+    /// Uniform double in [0, 1), exactly representable (53 random bits).
+    double nextDouble() { return static_cast<double>(nextU64() >> 11) * (1.0 / 9007199254740992.0); }
 
     /// Uniform integer in [0, bound) without modulo bias.
     uint32_t below(uint32_t bound) {

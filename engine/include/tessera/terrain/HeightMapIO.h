@@ -31,9 +31,10 @@ inline constexpr uint32_t kMaxHeightMapSide = 16384;
 Result<HeightField> loadHeightMapPng(const std::filesystem::path& path, TerrainScale scale = {});
 
 /// Writes `samples` (row-major, width * height) as a 16-bit grayscale PNG.
-/// The bytes depend only on the arguments (no time chunk, fixed zlib level and
-/// filter choice), so equal inputs give byte-identical files. The file is
-/// overwritten; on failure it is removed and the Error names it.
+/// Encoded by the core's one PNG encoder (tessera/core/ImageFile.h), so the
+/// bytes depend only on the arguments and equal inputs give byte-identical
+/// files. The folder must exist; the file is overwritten; on failure it is
+/// removed and the Error names it.
 Status saveHeightMapPng16(const std::filesystem::path& path, uint32_t width, uint32_t height,
                           const std::vector<uint16_t>& samples);
 

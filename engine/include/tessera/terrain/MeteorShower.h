@@ -33,7 +33,7 @@ struct MeteorShowerSettings {
 /// Impacts sorted by time. `aimAt(t)` gives the world XZ the shower aims at
 /// at time t (the demo aims ahead of the camera so the craters appear in
 /// view). The same settings always give the same impacts on every platform
-/// (its own integer PRNG; no std distributions, whose output varies by
+/// (the core's `Random`; no std distributions, whose output varies by
 /// library). Crater depth scales with radius.
 std::vector<MeteorImpact> scheduleMeteorShower(const MeteorShowerSettings& settings,
                                                const std::function<glm::vec2(double)>& aimAt);
