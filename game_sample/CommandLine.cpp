@@ -81,6 +81,7 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
     if (given("--lod-fade")) o.lodFade = t.lodFade;
     if (given("--lod-edge")) o.lodEdge = t.lodEdge;
     if (given("--lod-far-triangles")) o.lodFarTriangles = t.lodFarTriangles;
+    if (given("--renderdoc")) o.renderdocFrame = t.renderdocFrame;
     o.sceneGiven = given("--scene");
     o.sizeGiven = given("--width") || given("--height");
     o.warmupGiven = given("--warmup");

@@ -168,6 +168,12 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
          "after the last frame write the GPU and CPU copies of the height map as PREFIX.gpu.png and "
          "PREFIX.cpu.png");
 
+    count("--renderdoc", t.renderdocFrame, 0, 10000000, "N",
+          "capture frame N (from 0, warm-up included) with RenderDoc's in-application API, every pass and object "
+          "named; needs Debian's renderdoc package (librenderdoc.so), else a warning and the run goes on");
+    text("--renderdoc-file", o.renderdocPath, "PREFIX",
+         "where the capture goes: RenderDoc names it PREFIX_capture.rdc (default tessera, in the current directory); the demo prints the path");
+
     group("Benchmarks");
     choice("--bench", o.bench, {"terrain", "characters", "crowd", "crowd-sim", "subdiv"}, "NAME",
            "terrain: the first paper's Table 2, a far and a close-up view, every mode (adaptive with every metric "

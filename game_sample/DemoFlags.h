@@ -22,7 +22,7 @@ struct DemoFlagText {
     std::string characterPath, normals, subdivView, sculpt, terrainMode, tessMetric;
     float lodNear = 0, lodFar = 0, lodEdge = 0, characterLevel = 0, subdivPixels = 0;
     uint64_t lodBudget = 0, subdivBudget = 0;
-    uint32_t lodMiddleMax = 0, lodFade = 0, lodFarTriangles = 0, lodNearMax = 0;
+    uint32_t lodMiddleMax = 0, lodFade = 0, lodFarTriangles = 0, lodNearMax = 0, renderdocFrame = 0;
 };
 
 /// Declares every flag of tessera-demo on `line`, bound to `options` and `text`.

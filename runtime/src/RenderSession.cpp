@@ -13,10 +13,37 @@ namespace tessera::runtime {
 Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& options, terrain::Terrain& terrain) {
     std::unique_ptr<RenderSession> session(new RenderSession());
     session->mTerrain = &terrain;
+    // Before the instance exists: RenderDoc's layer joins only instances
+    // created after it is loaded.
+    if (options.renderdocFrame) {
+        auto loaded = gpu::RenderDoc::load(options.renderdocPath);
+        if (!loaded) log::warning("--renderdoc: " + loaded.error().message + "; rendering without a capture");
+        else session->mRenderDoc = std::move(loaded.value());
+    }
     auto selected = selectBackend(options);
+    if (!selected && session->mRenderDoc) {
+        // RenderDoc's layer can hide what Tessera needs (Debian 12's RenderDoc
+        // 1.24 reports lavapipe as Vulkan 1.2): a capture is not worth failing
+        // the run for, so try again without the layer.
+        log::warning("--renderdoc: RenderDoc's layer (API " + session->mRenderDoc->version() +
+                     ") leaves no device Tessera can use (" + selected.error().message +
+                     "); rendering without a capture");
+        session->mRenderDoc->disableLayer();
+        session->mRenderDoc.reset();
+        selected = selectBackend(options);
+    }
     if (!selected) return selected.error();
     session->mSelected = std::move(selected.value());
     log::info("backend " + session->capabilities().name + " on " + session->deviceName());
+    if (session->mRenderDoc && !session->mSelected->instance) {
+        log::warning("--renderdoc: backend " + session->capabilities().name + " records no GPU work to capture");
+        session->mRenderDoc.reset();
+    }
+    if (session->mRenderDoc) {
+        session->mCaptureFrame = options.renderdocFrame;
+        log::info("RenderDoc (API " + session->mRenderDoc->version() + "): capturing frame " +
+                  std::to_string(*options.renderdocFrame));
+    }
 
     session->mWidth = options.width;
     session->mHeight = options.height;
@@ -177,6 +204,8 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
     info.width = mWidth;
     info.height = mHeight;
     info.wireframe = wireframe;
+    const bool capture = mRenderDoc && mCaptureFrame == frameIndex;
+    if (capture) mRenderDoc->begin(*mSelected->instance);
     {
         TESSERA_CPU_SCOPE("render.record");
         if (mScheduler) info.gpu = &mScheduler->beginFrame(frameIndex);
@@ -194,6 +223,14 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
     if (mScheduler) {
         TESSERA_CPU_SCOPE("render.submit");
         mScheduler->endFrame(readback, mSwapchain.get());
+    }
+    if (capture) {
+        auto file = mRenderDoc->end(*mSelected->instance);
+        if (!file) log::warning("--renderdoc: " + file.error().message);
+        else {
+            mCaptureFile = file.value();
+            log::info("RenderDoc capture of frame " + std::to_string(frameIndex) + ": " + mCaptureFile.string());
+        }
     }
     auto& profiler = profiler::Profiler::global();
     const backend::FrameReport report = backend.lastFrameReport();

@@ -60,6 +60,9 @@ Status runFlythrough(const Options& options) {
         }
     }
     const std::vector<uint8_t> pixels = session.finish();
+    if (options.renderdocFrame && *options.renderdocFrame >= rendered)
+        log::warning("--renderdoc " + std::to_string(*options.renderdocFrame) + ": the run ended after " +
+                     std::to_string(rendered) + " frames, so nothing was captured");
     if (!options.crowdTiers.empty()) {
         if (!instanced) return fail("--crowd-tiers: backend ", session.capabilities().name,
                                     " draws no instanced crowd here (it needs --scene crowd)");

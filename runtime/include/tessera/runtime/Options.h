@@ -68,6 +68,11 @@ struct Options {
     /// backend binned them and as the CPU reference did (JSON).
     std::string crowdTiers;
     std::string record;                 ///< --record DIR: every frame as DIR/frame_NNNN.png
+    /// --renderdoc N: capture frame N (from 0, warm-up frames included)
+    /// through RenderDoc's in-application API, when librenderdoc.so is
+    /// there; without it a warning and the run goes on.
+    std::optional<uint32_t> renderdocFrame;
+    std::string renderdocPath = "tessera"; ///< --renderdoc-file PREFIX: RenderDoc names the file from it
 
     /// --terrain-mode; unset: adaptive where the backend draws it, else lowres.
     std::optional<terrain::TerrainMode> terrainMode;

@@ -9,12 +9,15 @@
 #include "tessera/runtime/SubdivModels.h"
 #include "tessera/lod/LodPolicy.h"
 #include "tessera/gpu/FrameScheduler.h"
+#include "tessera/gpu/RenderDoc.h"
 #include "tessera/gpu/RenderTarget.h"
 #include "tessera/gpu/Swapchain.h"
 #include "tessera/scene/Camera.h"
 #include "tessera/terrain/Terrain.h"
 
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,6 +91,9 @@ public:
     uint32_t lastPatchCount() const { return static_cast<uint32_t>(mVisible.size()); }
     /// The GPU copy of the height map (blocking).
     Result<std::vector<uint16_t>> readHeights();
+    /// The RenderDoc capture written by Options::renderdocFrame, once that
+    /// frame has been rendered; empty otherwise.
+    const std::filesystem::path& captureFile() const { return mCaptureFile; }
 
 private:
     RenderSession() = default;
@@ -97,6 +103,9 @@ private:
     std::unique_ptr<gpu::Swapchain> mSwapchain;
     std::unique_ptr<gpu::RenderTarget> mTarget;
     std::unique_ptr<gpu::FrameScheduler> mScheduler;
+    std::unique_ptr<gpu::RenderDoc> mRenderDoc; ///< with --renderdoc, when RenderDoc is there
+    std::optional<uint32_t> mCaptureFrame;
+    std::filesystem::path mCaptureFile;
     backend::TerrainHandle mTerrainHandle;
     std::vector<backend::CharacterHandle> mCharacters;
     backend::CrowdHandle mCrowd;
