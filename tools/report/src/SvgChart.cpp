@@ -117,7 +117,9 @@ std::string renderSvgChart(const SvgChart& chart) {
                "\" text-anchor=\"end\" class=\"label\">" + escapeHtml(bar.label) + "</text>";
         double x = kLabelWidth;
         for (const SvgSegment& s : bar.segments) {
-            const double w = std::max(0.0, s.value) / axisMax * kBarArea;
+            // A flagged mark is at least a few pixels wide, so the hatching
+            // shows even where the timestamps read next to nothing.
+            const double w = std::max(std::max(0.0, s.value) / axisMax * kBarArea, s.flagged ? 8.0 : 0.0);
             const std::string fill = s.flagged ? "url(#" + hatch + ")" : seriesColour(s.series);
             svg += "<rect x=\"" + num(x) + "\" y=\"" + std::to_string(y) + "\" width=\"" + num(std::max(w, 0.0)) +
                    "\" height=\"" + std::to_string(kBarHeight) + "\" fill=\"" + fill + "\"" +
