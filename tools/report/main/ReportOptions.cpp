@@ -51,6 +51,11 @@ void declare(cli::CommandLine& line, ReportOptions& o, Text& t) {
                    "(default 2)")
         ->type_name("PCT")
         ->check(cli::number(0, 100));
+    app.add_option("--min-gpu-share", o.minGpuFramePercent,
+                   "on a CPU device, flag the main terrain pass where all GPU passes make up less than this "
+                   "percentage of the wall-clock frame (default 50)")
+        ->type_name("PCT")
+        ->check(cli::number(0, 100));
 }
 
 } // namespace

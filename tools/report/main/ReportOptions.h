@@ -22,6 +22,7 @@ struct ReportOptions {
     std::string device;         ///< --device: passed to tessera-demo
     std::filesystem::path demo; ///< --demo: tessera-demo (default: next to tessera-report)
     double minMainPassPercent = 2.0; ///< --min-main-share
+    double minGpuFramePercent = 50.0; ///< --min-gpu-share
     bool help = false;
 };
 

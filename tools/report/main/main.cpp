@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
     job.inputDir = options.dir;
     job.html = options.out;
     job.rules.minMainPassShare = options.minMainPassPercent / 100.0;
+    job.rules.minGpuFrameShare = options.minGpuFramePercent / 100.0;
     if (options.run) {
         auto demo = reporttool::findDemo(options);
         if (!demo) {

@@ -42,12 +42,19 @@ std::vector<TimingFlag> assessRecord(const BenchRecord& r, const PlausibilityRul
         for (const PassTime& pass : r.passes) {
             if (pass.name != r.mainPassName()) continue;
             const double share = pass.gpuMs / r.cpuFrameMs;
+            const double frameShare = r.gpuMs / r.cpuFrameMs;
             if (share < rules.minMainPassShare)
                 flags.push_back({pass.name, pass.name + " reads " + ms(pass.gpuMs) + ", " + percent(share) +
                                                 " of the " + ms(r.cpuFrameMs) + " wall-clock frame, on a CPU device (" +
                                                 r.device +
                                                 ") where it draws every triangle: its timestamps miss the deferred "
                                                 "rasterisation"});
+            else if (frameShare < rules.minGpuFrameShare)
+                flags.push_back({pass.name, pass.name + " reads " + ms(pass.gpuMs) + ", and all GPU passes " +
+                                                ms(r.gpuMs) + ", only " + percent(frameShare) + " of the " +
+                                                ms(r.cpuFrameMs) + " wall-clock frame on a CPU device (" + r.device +
+                                                "): the rest is most likely this pass's deferred rasterisation, "
+                                                "which its timestamps miss"});
         }
     }
     return flags;

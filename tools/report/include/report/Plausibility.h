@@ -24,6 +24,12 @@ struct PlausibilityRules {
     /// On a CPU device, the main terrain pass must take at least this share
     /// of the wall-clock frame.
     double minMainPassShare = 0.02;
+    /// On a CPU device, the GPU passes together must account for at least
+    /// this share of the wall-clock frame; where they do not, the main
+    /// terrain pass is flagged, the one pass that can hide that much work.
+    /// (Measured on lavapipe at 320x180: hulldomain and streamout 67% to
+    /// 100%, r2vb's adaptive rows 34% to 40%, its close continuous row 2%.)
+    double minGpuFrameShare = 0.5;
     /// On any device, the GPU frame may exceed the wall-clock frame by at most
     /// this factor (plus `slackMs`, for timer granularity).
     double maxGpuOverFrame = 1.25;
