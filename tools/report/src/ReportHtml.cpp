@@ -286,7 +286,7 @@ h1{font-size:22px}h2{font-size:18px;margin-top:32px;border-bottom:1px solid #dee
 table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #dee2e6;padding:2px 6px;text-align:right}
 td:nth-child(-n+3),th{text-align:left}tr.flagged td{background:#fff4e6}td.doubt{color:#868e96;text-decoration:line-through dotted}
 .warn{background:#fff4e6;border:1px solid #f08c00;padding:4px 12px}.ok{color:#2f9e44}
-.shots{display:flex;flex-wrap:wrap;gap:16px}.shot{margin:0}.shot img{display:block;max-width:380px;margin-bottom:4px}
+.shots{display:flex;flex-wrap:wrap;gap:16px}.shot{margin:0;max-width:390px}.shot img{display:block;max-width:380px;margin-bottom:4px}
 .meta td{text-align:left})";
 
 } // namespace

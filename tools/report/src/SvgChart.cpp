@@ -35,6 +35,7 @@ double niceCeiling(double v) {
 } // namespace
 
 std::string formatValue(double value) {
+    if (value == 0.0) return "0";
     char buffer[48];
     const double a = std::fabs(value);
     if (a >= 10000.0) {
