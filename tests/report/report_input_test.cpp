@@ -143,3 +143,21 @@ TEST(ReportTool, WritesTheReportAndTheMergedTrace) {
     EXPECT_TRUE(fs::exists(dir / "report-trace.json"));
     EXPECT_NE(run.output.find("4 timings flagged"), std::string::npos) << run.output;
 }
+
+TEST(ReportInput, FindsTracesTheRecordsName) {
+    // A benchmark run with --out-dir elsewhere: the records name the traces.
+    const fs::path dir = outDir("named-traces");
+    const fs::path traces = outDir("named-traces-elsewhere");
+    test::writeFixture(dir);
+    nlohmann::json records = test::fixtureRecords();
+    for (auto& r : records) {
+        const std::string name = "bench-" + r["backend"].get<std::string>() + ".json";
+        if (fs::exists(dir / name)) fs::rename(dir / name, traces / name);
+        r["trace"] = (traces / name).string();
+    }
+    test::writeText(dir / "bench.json", records.dump());
+    auto written = report::writeReport({dir, dir / "report.html", {}, {}, {}});
+    ASSERT_TRUE(written) << written.error().message;
+    EXPECT_TRUE(written->notes.empty()) << written->notes.front();
+    EXPECT_FALSE(written->trace.empty());
+}

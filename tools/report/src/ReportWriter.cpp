@@ -36,6 +36,22 @@ std::string relativeLink(const fs::path& target, const fs::path& from) {
     return ec || rel.empty() ? fs::absolute(target, ec).string() : rel.generic_string();
 }
 
+/// The backend's trace: DIR/bench-<backend>.json, else the file its records
+/// name (as the benchmark wrote it: absolute, relative to where it ran, or
+/// relative to DIR); "" when none exists.
+fs::path findTrace(const InputLayout& layout, const std::vector<BenchRecord>& records, const std::string& backend) {
+    std::error_code ec;
+    if (fs::exists(layout.trace(backend), ec)) return layout.trace(backend);
+    for (const BenchRecord& r : records) {
+        if (r.backend != backend || r.trace.empty()) continue;
+        const fs::path named = r.trace;
+        if (fs::is_regular_file(named, ec)) return named;
+        if (named.is_relative() && fs::is_regular_file(layout.dir / named.filename(), ec))
+            return layout.dir / named.filename();
+    }
+    return {};
+}
+
 } // namespace
 
 std::string formatUtc(fs::file_time_type time) {
@@ -68,12 +84,12 @@ Result<ReportSummary> writeReport(const ReportJob& job) {
     for (const std::string& backend : backendsOf(inputs.records)) {
         BackendExtras extras;
         extras.backend = backend;
-        const fs::path trace = layout.trace(backend);
-        if (fs::exists(trace, ec)) {
+        const fs::path trace = findTrace(layout, inputs.records, backend);
+        if (!trace.empty()) {
             traces.push_back({backend, trace});
             extras.traceLink = relativeLink(trace, job.html);
         } else {
-            summary.notes.push_back(trace.string() + ": no trace for " + backend);
+            summary.notes.push_back(layout.trace(backend).string() + ": no trace for " + backend);
         }
         const fs::path shot = layout.screenshot(backend);
         if (fs::exists(shot, ec)) {

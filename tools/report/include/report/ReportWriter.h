@@ -14,9 +14,10 @@
 namespace tessera::report {
 
 struct ReportJob {
-    /// The inputs: bench.json (required), bench-<backend>.json traces and
-    /// screenshot-<backend>.png images (each optional: a missing one is a
-    /// note in the report and on stderr).
+    /// The inputs: bench.json (required), bench-<backend>.json traces (else
+    /// the trace a backend's records name) and screenshot-<backend>.png
+    /// images (each optional: a missing one is a note in the report and on
+    /// stderr).
     std::filesystem::path inputDir;
     /// The HTML file; the merged trace goes beside it as report-trace.json.
     std::filesystem::path html;
