@@ -16,8 +16,7 @@
 namespace tessera::test {
 
 inline nlohmann::json fixtureRecord(const std::string& backend, const std::string& view, const std::string& mode,
-                                    const std::string& metric, double mainMs, double cpuMs,
-                                    const std::string& device) {
+                                    const std::string& metric, double mainMs, double cpuMs, const std::string& device) {
     nlohmann::json r;
     r["backend"] = backend;
     r["device"] = device;
@@ -60,8 +59,8 @@ inline nlohmann::json fixtureRecords(const std::string& device = "llvmpipe (LLVM
             for (const char* backend : {"hulldomain", "r2vb", "streamout"}) {
                 const std::string b = backend;
                 const double main = b == "r2vb" ? 0.13 : b == "hulldomain" ? 18.0 : 21.0;
-                records.push_back(fixtureRecord(b, view, mode, std::string(mode) == "adaptive" ? "detail" : "-", main,
-                                                30.0, device));
+                records.push_back(
+                    fixtureRecord(b, view, mode, std::string(mode) == "adaptive" ? "detail" : "-", main, 30.0, device));
             }
     return records;
 }
@@ -74,14 +73,29 @@ inline void writeText(const std::filesystem::path& path, const std::string& text
 /// A trace like TraceWriter's: metadata, a frame slice and a GPU pass.
 inline nlohmann::json fixtureTrace(const std::string& backend, double startUs) {
     nlohmann::json events = nlohmann::json::array();
-    events.push_back({{"name", "process_name"}, {"ph", "M"}, {"pid", 1}, {"tid", 0},
-                      {"args", {{"name", "tessera bench terrain"}}}});
+    events.push_back(
+        {{"name", "process_name"}, {"ph", "M"}, {"pid", 1}, {"tid", 0}, {"args", {{"name", "tessera bench terrain"}}}});
     events.push_back({{"name", "thread_name"}, {"ph", "M"}, {"pid", 1}, {"tid", 1}, {"args", {{"name", "CPU main"}}}});
-    events.push_back({{"name", "frame"}, {"cat", "frame"}, {"ph", "X"}, {"pid", 1}, {"tid", 1}, {"ts", startUs},
-                      {"dur", 30000.0}, {"args", {{"frame", 0}}}});
-    events.push_back({{"name", "terrain.adaptive"}, {"cat", "gpu"}, {"ph", "X"}, {"pid", 1}, {"tid", 1000},
-                      {"ts", startUs + 100.0}, {"dur", 130.0}, {"args", {{"frame", 0}}}});
-    events.push_back({{"name", "intermediate bytes"}, {"ph", "C"}, {"pid", 1}, {"ts", startUs + 200.0},
+    events.push_back({{"name", "frame"},
+                      {"cat", "frame"},
+                      {"ph", "X"},
+                      {"pid", 1},
+                      {"tid", 1},
+                      {"ts", startUs},
+                      {"dur", 30000.0},
+                      {"args", {{"frame", 0}}}});
+    events.push_back({{"name", "terrain.adaptive"},
+                      {"cat", "gpu"},
+                      {"ph", "X"},
+                      {"pid", 1},
+                      {"tid", 1000},
+                      {"ts", startUs + 100.0},
+                      {"dur", 130.0},
+                      {"args", {{"frame", 0}}}});
+    events.push_back({{"name", "intermediate bytes"},
+                      {"ph", "C"},
+                      {"pid", 1},
+                      {"ts", startUs + 200.0},
                       {"args", {{"value", 1024}}}});
     return {{"displayTimeUnit", "ms"},
             {"traceEvents", events},

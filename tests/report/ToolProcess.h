@@ -10,7 +10,7 @@
 namespace tessera::test {
 
 struct ToolResult {
-    int exitCode = -1; ///< -1: it did not exit normally (a crash)
+    int exitCode = -1;  ///< -1: it did not exit normally (a crash)
     std::string output; ///< stdout and stderr together
 };
 

@@ -40,8 +40,9 @@ std::string findChromium() {
 std::vector<std::string> chromiumArgs() {
     // No sandbox: test machines and containers run as root, where Chromium
     // refuses its sandbox; the page is our own file.
-    return {"--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars", "--no-first-run",
-            "--disable-dev-shm-usage", "--mute-audio"};
+    return {"--headless",        "--no-sandbox",   "--disable-gpu",
+            "--hide-scrollbars", "--no-first-run", "--disable-dev-shm-usage",
+            "--mute-audio"};
 }
 
 /// Pixels within 4 per channel of `rgb` (0xRRGGBB).

@@ -56,8 +56,8 @@ TEST(ReportHtml, EveryChartHasItsSeries) {
         const std::string v = view;
         const std::string gpu = chart(html, "gpu-ms-" + v);
         ASSERT_FALSE(gpu.empty()) << "gpu-ms-" << v;
-        for (const char* pass : {"terrain.factors", "r2vb.cage", "r2vb.factors", "streamout.cull", "terrain.lowres",
-                                 "terrain.adaptive"})
+        for (const char* pass :
+             {"terrain.factors", "r2vb.cage", "r2vb.factors", "streamout.cull", "terrain.lowres", "terrain.adaptive"})
             EXPECT_NE(gpu.find("data-series=\"" + std::string(pass) + "\""), std::string::npos) << v << " " << pass;
         // Stacked per backend: one bar per row and backend.
         EXPECT_NE(gpu.find("data-row=\"adaptive/detail · streamout\""), std::string::npos);
@@ -88,7 +88,8 @@ TEST(ReportHtml, FlaggedTimingsAreHatchedNotFacts) {
     std::vector<std::string> marks;
     for (auto it = std::sregex_iterator(gpu.begin(), gpu.end(), flagged); it != std::sregex_iterator(); ++it)
         marks.push_back((*it)[1].str() + " @ " + (*it)[2].str());
-    EXPECT_EQ(marks, (std::vector<std::string>{"terrain.lowres @ lowres · r2vb", "terrain.adaptive @ adaptive/detail · r2vb"}));
+    EXPECT_EQ(marks, (std::vector<std::string>{"terrain.lowres @ lowres · r2vb",
+                                               "terrain.adaptive @ adaptive/detail · r2vb"}));
     EXPECT_NE(gpu.find("url(#hatch-gpu-ms-far)"), std::string::npos);
     // Its time ratio against hulldomain is marked too; triangles are facts.
     EXPECT_NE(chart(html, "ratio-time-far").find("class=\"mark flagged\" data-series=\"r2vb\""), std::string::npos);
@@ -107,13 +108,14 @@ TEST(ReportHtml, SelfContainedWithImagesAndLinks) {
     EXPECT_EQ(html.find("src=\"http"), std::string::npos);
     EXPECT_EQ(html.find("<link"), std::string::npos);
     // Links to the traces beside it.
-    for (const char* link : {"href=\"bench-hulldomain.json\"", "href=\"bench-r2vb.json\"", "href=\"bench-streamout.json\"",
-                             "href=\"report-trace.json\""})
+    for (const char* link : {"href=\"bench-hulldomain.json\"", "href=\"bench-r2vb.json\"",
+                             "href=\"bench-streamout.json\"", "href=\"report-trace.json\""})
         EXPECT_NE(html.find(link), std::string::npos) << link;
     EXPECT_NE(html.find("llvmpipe (LLVM 15.0.6, 256 bits)"), std::string::npos);
     EXPECT_NE(html.find("Mesa 22.3.6"), std::string::npos);
     EXPECT_NE(html.find("--camera 1800,900,6800,-30,-16"), std::string::npos);
-    EXPECT_TRUE(std::regex_search(html, std::regex("measured</th><td>20[0-9]{2}-[0-9]{2}-[0-9]{2} [0-9]{2}:[0-9]{2} UTC")));
+    EXPECT_TRUE(
+        std::regex_search(html, std::regex("measured</th><td>20[0-9]{2}-[0-9]{2}-[0-9]{2} [0-9]{2}:[0-9]{2} UTC")));
 }
 
 TEST(ReportHtml, EscapesText) {

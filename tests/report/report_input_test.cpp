@@ -105,8 +105,7 @@ TEST(ReportTool, MissingInputExitsOneWithOneLine) {
     EXPECT_EQ(run.exitCode, 1) << run.output;
     const auto lines = test::linesOf(run.output);
     ASSERT_EQ(lines.size(), 1u) << run.output;
-    EXPECT_EQ(lines[0].rfind("tessera-report: " + (dir / "bench.json").string() + ": no such file", 0), 0u)
-        << lines[0];
+    EXPECT_EQ(lines[0].rfind("tessera-report: " + (dir / "bench.json").string() + ": no such file", 0), 0u) << lines[0];
 }
 
 TEST(ReportTool, MalformedInputExitsOneWithOneLine) {

@@ -69,9 +69,11 @@ TEST(ReportMerge, MissingOrMalformedTracesAreNamed) {
     const fs::path dir = fixtureDir("merge-errors");
     auto missing = report::mergeTraces({{"r2vb", dir / "nope.json"}});
     ASSERT_FALSE(missing);
-    EXPECT_EQ(missing.error().message, (dir / "nope.json").string() + ": no such file or cannot open it (r2vb's trace)");
+    EXPECT_EQ(missing.error().message,
+              (dir / "nope.json").string() + ": no such file or cannot open it (r2vb's trace)");
     test::writeText(dir / "object.json", "{\"events\": []}");
     auto notTrace = report::mergeTraces({{"r2vb", dir / "object.json"}});
     ASSERT_FALSE(notTrace);
-    EXPECT_EQ(notTrace.error().message, (dir / "object.json").string() + ": not a Chrome trace (no \"traceEvents\" array)");
+    EXPECT_EQ(notTrace.error().message,
+              (dir / "object.json").string() + ": not a Chrome trace (no \"traceEvents\" array)");
 }

@@ -39,8 +39,7 @@ Status runProcess(const std::vector<std::string>& args) {
     while (waitpid(pid, &status, 0) < 0)
         if (errno != EINTR) return fail("waiting for ", args[0], ": ", std::strerror(errno));
     if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return {};
-    if (WIFEXITED(status))
-        return fail(commandLine(args), ": exited with status ", std::to_string(WEXITSTATUS(status)));
+    if (WIFEXITED(status)) return fail(commandLine(args), ": exited with status ", std::to_string(WEXITSTATUS(status)));
     return fail(commandLine(args), ": killed by signal ", std::to_string(WTERMSIG(status)));
 }
 
@@ -65,21 +64,34 @@ Status runDemo(const ReportOptions& o, const fs::path& demo) {
     fs::create_directories(o.dir, ec);
     if (ec) return fail(o.dir.string(), ": cannot create the folder: ", ec.message());
     const std::string width = std::to_string(o.width), height = std::to_string(o.height);
-    std::vector<std::string> bench = {demo.string(), "--bench", "terrain", "--backend", "all",
-                                      "--out", layout.bench().string(), "--out-dir", o.dir.string(),
-                                      "--width", width, "--height", height,
-                                      "--frames", std::to_string(o.frames), "--warmup", std::to_string(o.warmup)};
+    std::vector<std::string> bench = {demo.string(),
+                                      "--bench",
+                                      "terrain",
+                                      "--backend",
+                                      "all",
+                                      "--out",
+                                      layout.bench().string(),
+                                      "--out-dir",
+                                      o.dir.string(),
+                                      "--width",
+                                      width,
+                                      "--height",
+                                      height,
+                                      "--frames",
+                                      std::to_string(o.frames),
+                                      "--warmup",
+                                      std::to_string(o.warmup)};
     if (!o.device.empty()) bench.insert(bench.end(), {"--device", o.device});
     if (auto ran = runProcess(bench); !ran) return ran;
     // The screenshots of the backends the benchmark could run.
     auto records = report::loadBenchRecords(layout.bench());
     if (!records) return records.error();
     for (const std::string& backend : report::backendsOf(records.value())) {
-        std::vector<std::string> shot = {demo.string(), "--scene", "terrain", "--backend", backend,
-                                         "--camera", o.camera, "--width", width, "--height", height,
+        std::vector<std::string> shot = {demo.string(), "--scene", "terrain", "--backend", backend, "--camera",
+                                         o.camera, "--width", width, "--height", height,
                                          // The comparison's common cap: the three draw the same levels.
-                                         "--tess-max", "14.99", "--frames", "2",
-                                         "--screenshot", layout.screenshot(backend).string()};
+                                         "--tess-max", "14.99", "--frames", "2", "--screenshot",
+                                         layout.screenshot(backend).string()};
         if (!o.device.empty()) shot.insert(shot.end(), {"--device", o.device});
         if (auto ran = runProcess(shot); !ran) return ran;
     }

@@ -59,8 +59,7 @@ std::string label(const Context& c, const BenchRecord& r) {
 }
 
 /// Per (row, backend) bars of `view`, grouped by row.
-template <class MakeBar>
-std::vector<SvgBar> barsOf(const Context& c, const std::string& view, MakeBar make) {
+template <class MakeBar> std::vector<SvgBar> barsOf(const Context& c, const std::string& view, MakeBar make) {
     std::vector<SvgBar> bars;
     for (const BenchRecord* row : rowsOf(c.in.records, view)) {
         bool first = true;
@@ -78,15 +77,18 @@ std::vector<SvgBar> barsOf(const Context& c, const std::string& view, MakeBar ma
 }
 
 std::string gpuPassChart(const Context& c, const std::string& view) {
-    SvgChart chart{"gpu-ms-" + view, "GPU ms per pass, " + view + " view (median frame; hatched: not to be trusted)",
-                   "ms", {}, 0.0};
+    SvgChart chart{"gpu-ms-" + view,
+                   "GPU ms per pass, " + view + " view (median frame; hatched: not to be trusted)",
+                   "ms",
+                   {},
+                   0.0};
     chart.bars = barsOf(c, view, [&](const BenchRecord& r) {
         SvgBar bar;
         const auto& flags = c.flags.at(&r);
         const bool frameFlagged = isFlagged(flags, "");
         for (const PassTime& p : r.passes)
-            bar.segments.push_back({p.name, p.gpuMs, frameFlagged || isFlagged(flags, p.name),
-                                    formatValue(p.gpuMs) + " ms"});
+            bar.segments.push_back(
+                {p.name, p.gpuMs, frameFlagged || isFlagged(flags, p.name), formatValue(p.gpuMs) + " ms"});
         bar.note = "GPU " + formatValue(r.gpuMs) + " ms · frame " + formatValue(r.cpuFrameMs) + " ms" +
                    (flags.empty() ? "" : "  ⚠ flagged");
         return bar;
@@ -95,19 +97,22 @@ std::string gpuPassChart(const Context& c, const std::string& view) {
 }
 
 std::string frameChart(const Context& c, const std::string& view) {
-    SvgChart chart{"frame-ms-" + view, "GPU frame against wall-clock frame, " + view + " view (ms, median)", "ms",
-                   {}, 0.0};
+    SvgChart chart{
+        "frame-ms-" + view, "GPU frame against wall-clock frame, " + view + " view (ms, median)", "ms", {}, 0.0};
     for (const BenchRecord* row : rowsOf(c.in.records, view)) {
         bool first = true;
         for (const std::string& backend : c.backends) {
             const BenchRecord* r = findRecord(c.in.records, *row, backend);
             if (!r) continue;
             const auto& flags = c.flags.at(r);
-            SvgBar gpu{label(c, *r) + " GPU", {{"gpu frame", r->gpuMs, !flags.empty(), formatValue(r->gpuMs) + " ms"}},
-                       formatValue(r->gpuMs) + (flags.empty() ? "" : "  ⚠"), first};
-            SvgBar wall{label(c, *r) + " wall", {{"wall-clock frame", r->cpuFrameMs, false,
-                                                  formatValue(r->cpuFrameMs) + " ms"}},
-                        formatValue(r->cpuFrameMs), false};
+            SvgBar gpu{label(c, *r) + " GPU",
+                       {{"gpu frame", r->gpuMs, !flags.empty(), formatValue(r->gpuMs) + " ms"}},
+                       formatValue(r->gpuMs) + (flags.empty() ? "" : "  ⚠"),
+                       first};
+            SvgBar wall{label(c, *r) + " wall",
+                        {{"wall-clock frame", r->cpuFrameMs, false, formatValue(r->cpuFrameMs) + " ms"}},
+                        formatValue(r->cpuFrameMs),
+                        false};
             chart.bars.push_back(std::move(gpu));
             chart.bars.push_back(std::move(wall));
             first = false;
@@ -117,8 +122,11 @@ std::string frameChart(const Context& c, const std::string& view) {
 }
 
 std::string trianglesChart(const Context& c, const std::string& view) {
-    SvgChart chart{"triangles-" + view, "Triangles of the main terrain pass, " + view + " view (clipping invocations)",
-                   "triangles", {}, 0.0};
+    SvgChart chart{"triangles-" + view,
+                   "Triangles of the main terrain pass, " + view + " view (clipping invocations)",
+                   "triangles",
+                   {},
+                   0.0};
     chart.bars = barsOf(c, view, [&](const BenchRecord& r) {
         SvgBar bar;
         bar.segments.push_back({r.backend, double(r.triangles), false, formatValue(double(r.triangles))});
@@ -135,8 +143,8 @@ std::string invocationsChart(const Context& c, const std::string& view) {
         bar.segments.push_back({"vertex shader", double(r.vertexShaderInvocations), false, {}});
         bar.segments.push_back({"tess. evaluation", double(r.tessEvaluationInvocations), false, {}});
         bar.segments.push_back({"geometry shader", double(r.geometryShaderInvocations), false, {}});
-        bar.note = formatValue(double(r.vertexShaderInvocations + r.tessEvaluationInvocations +
-                                      r.geometryShaderInvocations));
+        bar.note =
+            formatValue(double(r.vertexShaderInvocations + r.tessEvaluationInvocations + r.geometryShaderInvocations));
         return bar;
     });
     return renderSvgChart(chart);
@@ -149,8 +157,8 @@ std::string memoryChart(const Context& c) {
         for (const auto& r : c.in.records)
             if (r.backend == backend) bytes = std::max(bytes, r.intermediateBytes);
         const double kib = double(bytes) / 1024.0;
-        chart.bars.push_back({backend, {{backend, kib, false, formatValue(kib) + " KiB"}}, formatValue(kib) + " KiB",
-                              false});
+        chart.bars.push_back(
+            {backend, {{backend, kib, false, formatValue(kib) + " KiB"}}, formatValue(kib) + " KiB", false});
     }
     return renderSvgChart(chart);
 }
@@ -160,7 +168,9 @@ std::string ratioChart(const Context& c, const std::string& view, bool time) {
     SvgChart chart{std::string(time ? "ratio-time-" : "ratio-triangles-") + view,
                    std::string(time ? "GPU ms" : "Triangles") + " relative to " + reference + ", " + view +
                        " view (dashed: 1.0)",
-                   "× " + reference, {}, 1.0};
+                   "× " + reference,
+                   {},
+                   1.0};
     for (const BenchRecord* row : rowsOf(c.in.records, view)) {
         const BenchRecord* ref = findRecord(c.in.records, *row, reference);
         if (!ref) continue;
@@ -175,8 +185,10 @@ std::string ratioChart(const Context& c, const std::string& view, bool time) {
             const bool flagged = time && (!c.flags.at(r).empty() || !c.flags.at(ref).empty());
             char text[32];
             std::snprintf(text, sizeof text, "%.2fx", ratio);
-            chart.bars.push_back({label(c, *r), {{backend, ratio, flagged, text}},
-                                  std::string(text) + (flagged ? "  ⚠ not a fact" : ""), first && !chart.bars.empty()});
+            chart.bars.push_back({label(c, *r),
+                                  {{backend, ratio, flagged, text}},
+                                  std::string(text) + (flagged ? "  ⚠ not a fact" : ""),
+                                  first && !chart.bars.empty()});
             first = false;
         }
     }
@@ -228,15 +240,16 @@ std::string flagList(const Context& c) {
     for (const auto& r : c.in.records)
         for (const TimingFlag& f : c.flags.at(&r)) {
             ++count;
-            html += "<li><b>" + escapeHtml(r.backend + ", " + r.rowLabel()) + "</b>: " + escapeHtml(f.reason) +
-                    "</li>\n";
+            html +=
+                "<li><b>" + escapeHtml(r.backend + ", " + r.rowLabel()) + "</b>: " + escapeHtml(f.reason) + "</li>\n";
         }
     if (count == 0)
         return "<p class=\"ok\" id=\"flags\">No timing was flagged: every GPU frame fits its wall-clock frame" +
                std::string(" and every main pass takes a plausible share of it.</p>\n");
     return "<div class=\"warn\" id=\"flags\"><p><b>" + std::to_string(count) +
            " timings are flagged and drawn hatched, not as facts.</b> A flagged pass's time is what its timestamps "
-           "read, not what it cost; ratios that involve it are marked too.</p><ul>\n" + html + "</ul></div>\n";
+           "read, not what it cost; ratios that involve it are marked too.</p><ul>\n" +
+           html + "</ul></div>\n";
 }
 
 std::string imagesSection(const Context& c) {
@@ -296,12 +309,23 @@ std::string escapeHtml(const std::string& text) {
     out.reserve(text.size());
     for (char ch : text) {
         switch (ch) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        case '\'': out += "&#39;"; break;
-        default: out += ch;
+        case '&':
+            out += "&amp;";
+            break;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        case '\'':
+            out += "&#39;";
+            break;
+        default:
+            out += ch;
         }
     }
     return out;
@@ -340,7 +364,8 @@ std::string renderReport(const ReportInputs& in) {
     html += " (ratios against " + escapeHtml(c.backends.empty() ? std::string("-") : c.backends.front()) +
             ")</td></tr><tr><th>measured</th><td>" + escapeHtml(in.measuredAt) + "</td></tr><tr><th>written</th><td>" +
             escapeHtml(in.writtenAt) + "</td></tr>";
-    if (!in.camera.empty()) html += "<tr><th>screenshot camera</th><td>--camera " + escapeHtml(in.camera) + "</td></tr>";
+    if (!in.camera.empty())
+        html += "<tr><th>screenshot camera</th><td>--camera " + escapeHtml(in.camera) + "</td></tr>";
     html += "<tr><th>traces</th><td>";
     bool anyTrace = false;
     for (const BackendExtras& b : in.backends)

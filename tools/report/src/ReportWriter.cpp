@@ -59,7 +59,9 @@ std::string formatUtc(fs::file_time_type time) {
     return formatTime(std::chrono::system_clock::to_time_t(system));
 }
 
-std::string nowUtc() { return formatTime(std::time(nullptr)); }
+std::string nowUtc() {
+    return formatTime(std::time(nullptr));
+}
 
 Result<ReportSummary> writeReport(const ReportJob& job) {
     const InputLayout layout{job.inputDir};

@@ -48,23 +48,27 @@ std::string formatValue(double value) {
         }
         return out;
     }
-    if (a >= 100.0) std::snprintf(buffer, sizeof buffer, "%.0f", value);
-    else if (a >= 10.0) std::snprintf(buffer, sizeof buffer, "%.1f", value);
-    else if (a >= 1.0) std::snprintf(buffer, sizeof buffer, "%.2f", value);
-    else std::snprintf(buffer, sizeof buffer, "%.3f", value);
+    if (a >= 100.0)
+        std::snprintf(buffer, sizeof buffer, "%.0f", value);
+    else if (a >= 10.0)
+        std::snprintf(buffer, sizeof buffer, "%.1f", value);
+    else if (a >= 1.0)
+        std::snprintf(buffer, sizeof buffer, "%.2f", value);
+    else
+        std::snprintf(buffer, sizeof buffer, "%.3f", value);
     return buffer;
 }
 
 std::string seriesColour(const std::string& series) {
     static const std::map<std::string, std::string> kFixed = {
-        {"hulldomain", "#1f6fb4"}, {"r2vb", "#d0542a"},        {"streamout", "#2f9e44"},
-        {"gpu frame", "#5b4bb7"},  {"wall-clock frame", "#9aa5b1"}, {"vertex shader", "#e8a33d"},
+        {"hulldomain", "#1f6fb4"},       {"r2vb", "#d0542a"},
+        {"streamout", "#2f9e44"},        {"gpu frame", "#5b4bb7"},
+        {"wall-clock frame", "#9aa5b1"}, {"vertex shader", "#e8a33d"},
         {"tess. evaluation", "#1f6fb4"}, {"geometry shader", "#2f9e44"}};
     if (auto it = kFixed.find(series); it != kFixed.end()) return it->second;
     // Passes: the main terrain passes share one colour (they draw the frame),
     // the others take palette colours in order of first use.
-    if (series.rfind("terrain.", 0) == 0 && series != "terrain.factors" && series != "terrain.splat")
-        return "#3d6fd9";
+    if (series.rfind("terrain.", 0) == 0 && series != "terrain.factors" && series != "terrain.splat") return "#3d6fd9";
     static const char* kPalette[] = {"#f08c00", "#c2255c", "#0ca678", "#7048e8", "#e8590c", "#1098ad",
                                      "#a61e4d", "#5c940d", "#862e9c", "#d9480f", "#364fc7", "#087f5b"};
     static std::map<std::string, size_t> assigned;
@@ -92,11 +96,14 @@ std::string renderSvgChart(const SvgChart& chart) {
     const int height = kTop + barsHeight + 26 + legendRows * 18 + 6;
     const std::string hatch = "hatch-" + chart.id;
     std::string svg;
-    svg += "<svg class=\"chart\" data-chart=\"" + escapeHtml(chart.id) + "\" xmlns=\"http://www.w3.org/2000/svg\" "
-           "width=\"" + std::to_string(kWidth) + "\" height=\"" + std::to_string(height) + "\" viewBox=\"0 0 " +
+    svg += "<svg class=\"chart\" data-chart=\"" + escapeHtml(chart.id) +
+           "\" xmlns=\"http://www.w3.org/2000/svg\" "
+           "width=\"" +
+           std::to_string(kWidth) + "\" height=\"" + std::to_string(height) + "\" viewBox=\"0 0 " +
            std::to_string(kWidth) + " " + std::to_string(height) + "\" role=\"img\" aria-label=\"" +
            escapeHtml(chart.title) + "\">\n";
-    svg += "<defs><pattern id=\"" + hatch + "\" patternUnits=\"userSpaceOnUse\" width=\"6\" height=\"6\" "
+    svg += "<defs><pattern id=\"" + hatch +
+           "\" patternUnits=\"userSpaceOnUse\" width=\"6\" height=\"6\" "
            "patternTransform=\"rotate(45)\"><rect width=\"6\" height=\"6\" fill=\"#e9ecef\"/>"
            "<rect width=\"3\" height=\"6\" fill=\"#868e96\"/></pattern></defs>\n";
     svg += "<text x=\"0\" y=\"16\" class=\"chart-title\">" + escapeHtml(chart.title) + "</text>\n";
@@ -124,8 +131,7 @@ std::string renderSvgChart(const SvgChart& chart) {
             const std::string fill = s.flagged ? "url(#" + hatch + ")" : seriesColour(s.series);
             svg += "<rect x=\"" + num(x) + "\" y=\"" + std::to_string(y) + "\" width=\"" + num(std::max(w, 0.0)) +
                    "\" height=\"" + std::to_string(kBarHeight) + "\" fill=\"" + fill + "\"" +
-                   (s.flagged ? " stroke=\"#495057\" stroke-width=\"0.5\" class=\"mark flagged\""
-                              : " class=\"mark\"") +
+                   (s.flagged ? " stroke=\"#495057\" stroke-width=\"0.5\" class=\"mark flagged\"" : " class=\"mark\"") +
                    " data-series=\"" + escapeHtml(s.series) + "\" data-row=\"" + escapeHtml(bar.label) +
                    "\" data-value=\"" + escapeHtml(formatValue(s.value)) + "\" shape-rendering=\"crispEdges\"><title>" +
                    escapeHtml(s.series + ": " + (s.tooltip.empty() ? formatValue(s.value) : s.tooltip)) +
@@ -149,9 +155,10 @@ std::string renderSvgChart(const SvgChart& chart) {
         const int lx = kLabelWidth + int(i % 4) * 180;
         if (i > 0 && i % 4 == 0) ly += 18;
         svg += "<rect x=\"" + std::to_string(lx) + "\" y=\"" + std::to_string(ly - 10) +
-               "\" width=\"12\" height=\"12\" fill=\"" + seriesColour(series[i]) + "\" class=\"legend\" data-series=\"" +
-               escapeHtml(series[i]) + "\"/><text x=\"" + std::to_string(lx + 16) + "\" y=\"" + std::to_string(ly) +
-               "\" class=\"label\">" + escapeHtml(series[i]) + "</text>";
+               "\" width=\"12\" height=\"12\" fill=\"" + seriesColour(series[i]) +
+               "\" class=\"legend\" data-series=\"" + escapeHtml(series[i]) + "\"/><text x=\"" +
+               std::to_string(lx + 16) + "\" y=\"" + std::to_string(ly) + "\" class=\"label\">" +
+               escapeHtml(series[i]) + "</text>";
     }
     svg += "\n</svg>\n";
     return svg;

@@ -19,14 +19,14 @@ struct SvgSegment {
 struct SvgBar {
     std::string label;
     std::vector<SvgSegment> segments;
-    std::string note;     ///< text right of the bar
+    std::string note;       ///< text right of the bar
     bool gapBefore = false; ///< extra space above: a new group
 };
 
 struct SvgChart {
-    std::string id;    ///< data-chart
+    std::string id; ///< data-chart
     std::string title;
-    std::string unit;  ///< axis unit ("ms", "triangles")
+    std::string unit; ///< axis unit ("ms", "triangles")
     std::vector<SvgBar> bars;
     double referenceLine = 0.0; ///< a dashed line at this value (0: none)
 };

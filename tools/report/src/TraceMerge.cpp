@@ -81,8 +81,8 @@ Result<MergedTrace> mergeTraces(const std::vector<TraceSource>& sources) {
             events.push_back(std::move(e));
         }
         merged.backends.push_back(source.backend);
-        backends.push_back(json{{"pid", pid}, {"backend", source.backend}, {"device", device},
-                                {"trace", source.path.filename().string()}});
+        backends.push_back(json{
+            {"pid", pid}, {"backend", source.backend}, {"device", device}, {"trace", source.path.filename().string()}});
     }
     merged.events = events.size();
     json root{{"displayTimeUnit", "ms"},

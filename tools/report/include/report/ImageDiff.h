@@ -17,9 +17,9 @@ namespace tessera::report {
 inline constexpr int kDiffChannelThreshold = 24;
 
 struct ImageDiff {
-    Rgba8Image image;              ///< differing pixels red over a dimmed reference
+    Rgba8Image image;               ///< differing pixels red over a dimmed reference
     double differingFraction = 0.0; ///< share of pixels that differ
-    double meanDifference = 0.0;   ///< mean absolute channel difference (0..255)
+    double meanDifference = 0.0;    ///< mean absolute channel difference (0..255)
 };
 
 /// Compares `image` with `reference`; fails when their sizes differ.

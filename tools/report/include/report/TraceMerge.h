@@ -19,8 +19,8 @@ struct TraceSource {
 
 /// Summary of a merge, for the report.
 struct MergedTrace {
-    std::string json;       ///< the merged trace's text
-    size_t events = 0;      ///< events written (metadata included)
+    std::string json;                  ///< the merged trace's text
+    size_t events = 0;                 ///< events written (metadata included)
     std::vector<std::string> backends; ///< in pid order (pid 1, 2, ...)
 };
 
