@@ -160,3 +160,17 @@ TEST(ReportInput, FindsTracesTheRecordsName) {
     EXPECT_TRUE(written->notes.empty()) << written->notes.front();
     EXPECT_FALSE(written->trace.empty());
 }
+
+TEST(ReportTool, ARunThatCannotStartOrFailsExitsOne) {
+    const fs::path dir = outDir("tool-run-fails");
+    auto missing = test::runTool(TESSERA_REPORT_EXE, {"--run", "--dir", dir.string(), "--demo", "/nonexistent/demo"});
+    EXPECT_EQ(missing.exitCode, 1) << missing.output;
+    EXPECT_NE(missing.output.find("tessera-report: /nonexistent/demo: no tessera-demo to run"), std::string::npos)
+        << missing.output;
+    // A demo that fails: the report names the command line and its status.
+    auto failed = test::runTool(TESSERA_REPORT_EXE, {"--run", "--dir", dir.string(), "--demo", "/bin/false"});
+    EXPECT_EQ(failed.exitCode, 1) << failed.output;
+    EXPECT_NE(failed.output.find("/bin/false --bench terrain --backend all"), std::string::npos) << failed.output;
+    EXPECT_NE(failed.output.find(": exited with status 1"), std::string::npos) << failed.output;
+    EXPECT_FALSE(fs::exists(dir / "report.html"));
+}
