@@ -64,23 +64,10 @@ Status runDemo(const ReportOptions& o, const fs::path& demo) {
     fs::create_directories(o.dir, ec);
     if (ec) return fail(o.dir.string(), ": cannot create the folder: ", ec.message());
     const std::string width = std::to_string(o.width), height = std::to_string(o.height);
-    std::vector<std::string> bench = {demo.string(),
-                                      "--bench",
-                                      "terrain",
-                                      "--backend",
-                                      "all",
-                                      "--out",
-                                      layout.bench().string(),
-                                      "--out-dir",
-                                      o.dir.string(),
-                                      "--width",
-                                      width,
-                                      "--height",
-                                      height,
-                                      "--frames",
-                                      std::to_string(o.frames),
-                                      "--warmup",
-                                      std::to_string(o.warmup)};
+    std::vector<std::string> bench = {demo.string(), "--bench", "terrain", "--backend", "all"};
+    bench.insert(bench.end(), {"--out", layout.bench().string(), "--out-dir", o.dir.string()});
+    bench.insert(bench.end(), {"--width", width, "--height", height});
+    bench.insert(bench.end(), {"--frames", std::to_string(o.frames), "--warmup", std::to_string(o.warmup)});
     if (!o.device.empty()) bench.insert(bench.end(), {"--device", o.device});
     if (auto ran = runProcess(bench); !ran) return ran;
     // The screenshots of the backends the benchmark could run.
