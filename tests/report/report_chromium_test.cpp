@@ -71,7 +71,7 @@ TEST(ReportChromium, ChartsRenderInHeadlessChromium) {
     const fs::path dir = fs::path(TESSERA_TEST_OUTPUT_DIR) / "report" / "chromium";
     fs::remove_all(dir);
     test::writeFixture(dir);
-    auto written = test::runTool(TESSERA_REPORT_EXE, {"--dir", dir.string()});
+    auto written = test::runProgram(TESSERA_REPORT_EXE, {"--dir", dir.string()});
     ASSERT_EQ(written.exitCode, 0) << written.output;
     const std::string url = "file://" + fs::absolute(dir / "report.html").string();
 
@@ -81,7 +81,7 @@ TEST(ReportChromium, ChartsRenderInHeadlessChromium) {
     args.push_back("--screenshot=" + shot.string());
     args.push_back("--window-size=1000,1600");
     args.push_back(url);
-    auto ran = test::runTool(chromium, args);
+    auto ran = test::runProgram(chromium, args);
     ASSERT_EQ(ran.exitCode, 0) << ran.output;
     auto image = readPng(shot);
     ASSERT_TRUE(image) << image.error().message << "\n" << ran.output;
@@ -98,7 +98,7 @@ TEST(ReportChromium, ChartsRenderInHeadlessChromium) {
     std::vector<std::string> domArgs = chromiumArgs();
     domArgs.push_back("--dump-dom");
     domArgs.push_back(url);
-    auto dom = test::runTool(chromium, domArgs);
+    auto dom = test::runProgram(chromium, domArgs);
     ASSERT_EQ(dom.exitCode, 0) << dom.output;
     EXPECT_EQ(countOf(dom.output, "<svg class=\"chart\""), 13u) << "2 views x 6 charts and the memory chart";
     for (const char* series : {"hulldomain", "r2vb", "streamout", "terrain.adaptive", "r2vb.cage", "wall-clock frame"})

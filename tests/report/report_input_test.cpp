@@ -101,7 +101,7 @@ TEST(ReportInput, WriterNotesMissingOptionalInputs) {
 
 TEST(ReportTool, MissingInputExitsOneWithOneLine) {
     const fs::path dir = outDir("tool-missing");
-    auto run = test::runTool(TESSERA_REPORT_EXE, {"--dir", dir.string()});
+    auto run = test::runProgram(TESSERA_REPORT_EXE, {"--dir", dir.string()});
     EXPECT_EQ(run.exitCode, 1) << run.output;
     const auto lines = test::linesOf(run.output);
     ASSERT_EQ(lines.size(), 1u) << run.output;
@@ -111,7 +111,7 @@ TEST(ReportTool, MissingInputExitsOneWithOneLine) {
 TEST(ReportTool, MalformedInputExitsOneWithOneLine) {
     const fs::path dir = outDir("tool-malformed");
     test::writeText(dir / "bench.json", "[{\"backend\": ");
-    auto run = test::runTool(TESSERA_REPORT_EXE, {"--dir", dir.string()});
+    auto run = test::runProgram(TESSERA_REPORT_EXE, {"--dir", dir.string()});
     EXPECT_EQ(run.exitCode, 1) << run.output;
     const auto lines = test::linesOf(run.output);
     ASSERT_EQ(lines.size(), 1u) << run.output;
@@ -119,16 +119,16 @@ TEST(ReportTool, MalformedInputExitsOneWithOneLine) {
 }
 
 TEST(ReportTool, BadFlagsExitTwo) {
-    auto unknown = test::runTool(TESSERA_REPORT_EXE, {"--frobnicate"});
+    auto unknown = test::runProgram(TESSERA_REPORT_EXE, {"--frobnicate"});
     EXPECT_EQ(unknown.exitCode, 2) << unknown.output;
     EXPECT_NE(unknown.output.find("unknown option \"--frobnicate\""), std::string::npos) << unknown.output;
-    auto noDir = test::runTool(TESSERA_REPORT_EXE, {});
+    auto noDir = test::runProgram(TESSERA_REPORT_EXE, {});
     EXPECT_EQ(noDir.exitCode, 2) << noDir.output;
     EXPECT_NE(noDir.output.find("--dir DIR is required"), std::string::npos) << noDir.output;
-    auto runOnly = test::runTool(TESSERA_REPORT_EXE, {"--dir", "x", "--width", "320"});
+    auto runOnly = test::runProgram(TESSERA_REPORT_EXE, {"--dir", "x", "--width", "320"});
     EXPECT_EQ(runOnly.exitCode, 2) << runOnly.output;
     EXPECT_NE(runOnly.output.find("need --run"), std::string::npos) << runOnly.output;
-    auto help = test::runTool(TESSERA_REPORT_EXE, {"--help"});
+    auto help = test::runProgram(TESSERA_REPORT_EXE, {"--help"});
     EXPECT_EQ(help.exitCode, 0);
     EXPECT_NE(help.output.find("--run"), std::string::npos);
 }
@@ -136,7 +136,7 @@ TEST(ReportTool, BadFlagsExitTwo) {
 TEST(ReportTool, WritesTheReportAndTheMergedTrace) {
     const fs::path dir = outDir("tool-ok");
     test::writeFixture(dir);
-    auto run = test::runTool(TESSERA_REPORT_EXE, {"--dir", dir.string()});
+    auto run = test::runProgram(TESSERA_REPORT_EXE, {"--dir", dir.string()});
     EXPECT_EQ(run.exitCode, 0) << run.output;
     EXPECT_TRUE(fs::exists(dir / "report.html"));
     EXPECT_TRUE(fs::exists(dir / "report-trace.json"));
@@ -163,12 +163,12 @@ TEST(ReportInput, FindsTracesTheRecordsName) {
 
 TEST(ReportTool, ARunThatCannotStartOrFailsExitsOne) {
     const fs::path dir = outDir("tool-run-fails");
-    auto missing = test::runTool(TESSERA_REPORT_EXE, {"--run", "--dir", dir.string(), "--demo", "/nonexistent/demo"});
+    auto missing = test::runProgram(TESSERA_REPORT_EXE, {"--run", "--dir", dir.string(), "--demo", "/nonexistent/demo"});
     EXPECT_EQ(missing.exitCode, 1) << missing.output;
     EXPECT_NE(missing.output.find("tessera-report: /nonexistent/demo: no tessera-demo to run"), std::string::npos)
         << missing.output;
     // A demo that fails: the report names the command line and its status.
-    auto failed = test::runTool(TESSERA_REPORT_EXE, {"--run", "--dir", dir.string(), "--demo", "/bin/false"});
+    auto failed = test::runProgram(TESSERA_REPORT_EXE, {"--run", "--dir", dir.string(), "--demo", "/bin/false"});
     EXPECT_EQ(failed.exitCode, 1) << failed.output;
     EXPECT_NE(failed.output.find("/bin/false --bench terrain --backend all"), std::string::npos) << failed.output;
     EXPECT_NE(failed.output.find(": exited with status 1"), std::string::npos) << failed.output;

@@ -19,7 +19,7 @@ TEST(ReportRun, MeasuresEveryBackendAndWritesTheReport) {
     const fs::path dir = fs::path(TESSERA_TEST_OUTPUT_DIR) / "report" / "run";
     fs::remove_all(dir);
     // The smallest run that still draws every row: 64x36, one frame a row.
-    auto run = test::runTool(TESSERA_REPORT_EXE, {"--run", "--dir", dir.string(), "--width", "64", "--height", "36",
+    auto run = test::runProgram(TESSERA_REPORT_EXE, {"--run", "--dir", dir.string(), "--width", "64", "--height", "36",
                                                   "--frames", "1", "--warmup", "0"});
     ASSERT_EQ(run.exitCode, 0) << run.output;
     std::ifstream benchFile(dir / "bench.json");

@@ -1,6 +1,7 @@
 #pragma once
 /// @file DemoProcess.h
-/// Runs tessera-demo as a child process and captures its output.
+/// Runs tessera-demo, or any program, as a child process and captures its
+/// output.
 
 #include <cstdio>
 #include <sstream>
@@ -21,16 +22,12 @@ inline std::string shellQuote(const std::string& s) {
     return out + "'";
 }
 
-/// Runs the demo with `args`; the exit code is -1 if it did not exit normally
+/// Runs `program` with `args` through the shell, `environment` (assignments
+/// such as `A=1 `) before it; the exit code is -1 if it did not exit normally
 /// (a crash), so tests can tell a clean failure from a crash.
-inline ProcessResult runDemo(const std::vector<std::string>& args) {
-    // Under ./tessera test --sanitize the demo still runs with ASan and UBSan,
-    // but without leak checking: the Vulkan loader unloads the driver before
-    // exit, so the driver's own process-lifetime allocations show up as leaks
-    // from "<unknown module>" that no suppression can name. Leak checking stays
-    // on for the unit tests, which cover the engine without a driver.
-    std::string command = "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" ";
-    command += shellQuote(TESSERA_DEMO_EXE);
+inline ProcessResult runProgram(const std::string& program, const std::vector<std::string>& args,
+                                const std::string& environment = {}) {
+    std::string command = environment + shellQuote(program);
     for (const auto& a : args) {
         command += ' ';
         command += shellQuote(a);
@@ -46,6 +43,18 @@ inline ProcessResult runDemo(const std::vector<std::string>& args) {
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
 }
+
+#ifdef TESSERA_DEMO_EXE
+/// Runs the demo with `args`.
+inline ProcessResult runDemo(const std::vector<std::string>& args) {
+    // Under ./tessera test --sanitize the demo still runs with ASan and UBSan,
+    // but without leak checking: the Vulkan loader unloads the driver before
+    // exit, so the driver's own process-lifetime allocations show up as leaks
+    // from "<unknown module>" that no suppression can name. Leak checking stays
+    // on for the unit tests, which cover the engine without a driver.
+    return runProgram(TESSERA_DEMO_EXE, args, "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" ");
+}
+#endif
 
 /// The log's error lines ("tessera: error: ...") in a run's output.
 inline std::vector<std::string> errorLines(const std::string& output) {
