@@ -156,7 +156,14 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
     text("--clear-color", t.clearColor, "r,g,b", "background colour, components in [0,1]");
     count("--frames", o.frames, 1, 10000000, "N",
           "frames to render after the warm-up (default 60 headless; until closed with --window)");
-    flag("--window", o.window, "open a window (GLFW) instead of rendering headless");
+    flag("--window", o.window,
+         "open a window (GLFW) instead of rendering headless, with an overlay of statistics and controls: F1 "
+         "overlay, Tab free camera (WASD/QE, right mouse to look, Shift fast), 1-3 backends, F2 wireframe, F3 LOD "
+         "colours, M meteor, F12 screenshot, F11 RenderDoc capture (with --renderdoc), Esc quit");
+    app.add_flag_function("--overlay", [&o](std::int64_t) { o.overlay = true; },
+                          "draw the overlay headless too (into screenshots; its GPU pass in --benchmark)");
+    app.add_flag_function("--no-overlay", [&o](std::int64_t) { o.overlay = false; },
+                          "with --window: no overlay (the scene alone)");
     text("--screenshot", o.screenshot, "FILE", "write the last frame as PNG");
     text("--record", o.record, "DIR", "write every frame as DIR/frame_NNNN.png (headless; waits for each frame)");
     text("--capture", o.capture, "FILE", "write a Chrome trace (Perfetto, chrome://tracing)");

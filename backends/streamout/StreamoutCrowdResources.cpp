@@ -86,7 +86,10 @@ Result<std::unique_ptr<StreamoutCrowdResources>> StreamoutCrowdResources::create
 }
 
 StreamoutCrowdResources::~StreamoutCrowdResources() {
-    if (mQueries) vkDestroyQueryPool(mDevice->handle(), mQueries, nullptr);
+    if (mQueries) {
+        mDevice->clearName(VK_OBJECT_TYPE_QUERY_POOL, mQueries);
+        vkDestroyQueryPool(mDevice->handle(), mQueries, nullptr);
+    }
 }
 
 void StreamoutCrowdResources::copyResults(VkCommandBuffer cmd, uint32_t first, uint32_t count) {

@@ -80,6 +80,29 @@ Result<std::unique_ptr<SelectedBackend>> selectBackend(const Options& options) {
     return fail("no backend can run on this device; run --list-backends for details");
 }
 
+Result<backend::BackendPtr> createBackendOnDevice(SelectedBackend& selected, const Options& options,
+                                                  const std::string& name, backend::BackendCapabilities& caps) {
+    if (!selected.registry.contains(name)) {
+        if (Status loaded = makeLoader(options).loadBackend(name, selected.registry); !loaded) return loaded.error();
+    }
+    auto created = selected.registry.create(name);
+    if (!created) return created.error();
+    const backend::DeviceFeatures* features = selected.device ? &selected.device->features() : nullptr;
+    caps = created.value()->capabilities(features);
+    // A session keeps its device (and window) across switches, so the null
+    // backend and the GPU backends cannot replace one another in it.
+    if (caps.requiresGpu && !features)
+        return fail("backend ", name, " needs a Vulkan device and this session runs the null backend without one; "
+                    "start with a GPU backend to switch between them");
+    if (!caps.requiresGpu && features)
+        return fail("backend ", name, " runs without a device and this session renders on ", features->deviceName,
+                    "; start with --backend ", name, " instead");
+    if (!caps.supported())
+        return fail("backend ", name, " cannot run on ", features ? features->deviceName : std::string("this host"),
+                    ": it needs ", joinMissing(caps));
+    return std::move(created.value());
+}
+
 Status listBackends(const Options& options) {
     auto loader = makeLoader(options);
     backend::BackendRegistry registry;

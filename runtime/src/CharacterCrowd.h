@@ -37,7 +37,7 @@ public:
     /// The characters drawn as one instanced crowd (null with
     /// --character-path single-pass or more creatures than a crowd mixes).
     InstancedCrowd* instancedCrowd() override { return mInstanced.get(); }
-    void useInstancedCrowd() override { mInstancedActive = mInstanced != nullptr; }
+    void useInstancedCrowd(bool instanced) override { mInstancedActive = instanced && mInstanced != nullptr; }
     uint32_t instanceCapacity() const override { return uint32_t(mMembers.size()); }
 
     /// Where the crowd gathers (on the ground), for the camera.

@@ -5,6 +5,7 @@
 #include "tessera/profiler/CpuScope.h"
 #include "tessera/profiler/Profiler.h"
 
+#include <chrono>
 #include <cstdio>
 #include <sstream>
 
@@ -60,32 +61,123 @@ Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& opti
             std::make_unique<gpu::FrameScheduler>(*device, profiler::Profiler::global(), *session->mTarget);
     }
 
-    backend::BackendInitInfo init;
-    init.device = device;
-    if (device) init.features = device->features();
-    init.colorFormat = static_cast<uint32_t>(gpu::RenderTarget::kColorFormat);
-    init.depthFormat = static_cast<uint32_t>(gpu::RenderTarget::kDepthFormat);
-    backend::Backend& backend = *session->mSelected->backend;
-    if (auto ok = backend.initialize(init); !ok) return ok.error();
+    if (Status ok = session->initializeBackend(false); !ok) return ok.error();
+    return session;
+}
+
+Status RenderSession::initializeBackend(bool alreadyInitialized) {
+    backend::Backend& backend = *mSelected->backend;
+    ++mGeneration;
+    if (!alreadyInitialized) {
+        gpu::Device* device = mSelected->device.get();
+        backend::BackendInitInfo init;
+        init.device = device;
+        if (device) init.features = device->features();
+        init.colorFormat = static_cast<uint32_t>(gpu::RenderTarget::kColorFormat);
+        init.depthFormat = static_cast<uint32_t>(gpu::RenderTarget::kDepthFormat);
+        if (auto ok = backend.initialize(init); !ok) return ok.error();
+    }
     // The upload copies the CPU height field as it is now, craters included,
     // so the splats still queued (--splat) must not be applied a second time.
-    (void)terrain.takePendingSplats();
-    auto handle = backend.createTerrain({&terrain});
+    (void)mTerrain->takePendingSplats();
+    auto handle = backend.createTerrain({mTerrain});
     if (!handle) {
         backend.shutdown();
         return handle.error();
     }
-    session->mTerrainHandle = handle.value();
-    return session;
+    mTerrainHandle = handle.value();
+    return {};
+}
+
+void RenderSession::releaseBackend(Release release) {
+    if (!mSelected || !mSelected->backend) return;
+    if (mScheduler) mScheduler->waitIdle();
+    backend::Backend& backend = *mSelected->backend;
+    for (backend::CharacterHandle character : mCharacters) backend.destroyCharacter(character);
+    for (backend::SubdivHandle surface : mSubdivs) backend.destroySubdiv(surface);
+    if (mCrowd.valid()) backend.destroyCrowd(mCrowd);
+    if (mTerrainHandle.valid()) backend.destroyTerrain(mTerrainHandle);
+    mCharacters.clear();
+    mSubdivs.clear();
+    mCrowd = {};
+    mTerrainHandle = {};
+    if (release == Release::Park && mParkBackends) {
+        // Kept initialised, with no scene objects, for a switch back: its
+        // pipelines are what a switch spends its time on (seconds on a
+        // software rasterizer).
+        const std::string name = mSelected->capabilities.name;
+        mParked[name] = {std::move(mSelected->backend), mSelected->capabilities};
+    } else if (release != Release::Keep) {
+        backend.shutdown();
+    }
+    // Deferred destructions wait for frames in flight; there are none now.
+    if (mScheduler) mScheduler->waitIdle();
+}
+
+Status RenderSession::requestCapture() {
+    if (!mRenderDoc) return fail("no RenderDoc capture: start with --renderdoc N (and RenderDoc installed) to capture "
+                                 "from the window");
+    mCaptureFrame = mFrameIndex + 1;
+    return {};
+}
+
+Status RenderSession::switchBackend(const Options& options, const std::string& name, terrain::Terrain* terrain) {
+    TESSERA_CPU_SCOPE("session.switchBackend");
+    const auto start = std::chrono::steady_clock::now();
+    const std::string previous = capabilities().name;
+    ParkedBackend next;
+    bool warm = false;
+    if (name == previous && mParkBackends) {
+        // The same backend again (a world loaded anew): keep it, re-create
+        // the scene on it.
+        releaseBackend(Release::Keep);
+        if (terrain) mTerrain = terrain;
+        return initializeBackend(true);
+    }
+    if (auto it = mParked.find(name); it != mParked.end()) {
+        next = std::move(it->second);
+        mParked.erase(it);
+        warm = true;
+    } else {
+        auto created = createBackendOnDevice(*mSelected, options, name, next.capabilities);
+        if (!created) return created.error();
+        next.backend = std::move(created.value());
+    }
+    releaseBackend(Release::Park);
+    if (terrain) mTerrain = terrain;
+    mSelected->backend = std::move(next.backend);
+    mSelected->capabilities = next.capabilities;
+    Status ok = initializeBackend(warm);
+    if (ok) {
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        log::info("switched backend " + previous + " -> " + name + " on " + deviceName() + " (" +
+                  std::to_string(int(ms)) + " ms" + (warm ? ", kept from before" : "") + "; the scene uploads follow)");
+        return {};
+    }
+    // Leave the session drawing as before rather than with no backend.
+    mSelected->backend.reset();
+    ParkedBackend back;
+    bool backWarm = false;
+    if (auto it = mParked.find(previous); it != mParked.end()) {
+        back = std::move(it->second);
+        mParked.erase(it);
+        backWarm = true;
+    } else if (auto created = createBackendOnDevice(*mSelected, options, previous, back.capabilities); created) {
+        back.backend = std::move(created.value());
+    }
+    if (back.backend) {
+        mSelected->backend = std::move(back.backend);
+        mSelected->capabilities = back.capabilities;
+        if (Status again = initializeBackend(backWarm); !again)
+            log::error("backend " + previous + ": " + again.error().message);
+    }
+    return fail("switching to backend ", name, ": ", ok.error().message);
 }
 
 RenderSession::~RenderSession() {
-    if (!mSelected || !mSelected->backend) return;
-    if (mScheduler) mScheduler->waitIdle();
-    for (backend::CharacterHandle character : mCharacters) mSelected->backend->destroyCharacter(character);
-    for (backend::SubdivHandle surface : mSubdivs) mSelected->backend->destroySubdiv(surface);
-    if (mTerrainHandle.valid()) mSelected->backend->destroyTerrain(mTerrainHandle);
-    mSelected->backend->shutdown();
+    releaseBackend(Release::Shutdown);
+    for (auto& [name, parked] : mParked) parked.backend->shutdown();
+    mParked.clear();
 }
 
 lod::DeviceClass RenderSession::deviceClass() const {
@@ -187,6 +279,7 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
                                 bool wireframe, bool readback, const backend::CharacterDrawInfo* characters,
                                 const backend::CrowdDrawInfo* crowd, std::span<const SubdivDraw> surfaces) {
     backend::Backend& backend = *mSelected->backend;
+    mFrameIndex = frameIndex;
     mVisible.clear();
     {
         TESSERA_CPU_SCOPE("terrain.cull");
@@ -219,6 +312,7 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
             backend.drawSubdiv(surface.handle, surface.info);
         }
         backend.endFrame();
+        if (mOverlay && info.gpu) mOverlay(*info.gpu);
     }
     if (mScheduler) {
         TESSERA_CPU_SCOPE("render.submit");

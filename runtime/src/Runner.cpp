@@ -12,6 +12,7 @@
 #include "tessera/runtime/RenderSession.h"
 #include "tessera/runtime/SceneRun.h"
 #include "TerrainBenchmark.h"
+#include "WindowController.h"
 #include "tessera/core/ImageFile.h"
 #include "tessera/core/Log.h"
 #include "tessera/profiler/CpuScope.h"
@@ -28,7 +29,8 @@ constexpr uint32_t kDefaultHeadlessFrames = 60;
 
 Status runFlythrough(const Options& options) {
     auto& profiler = profiler::Profiler::global();
-    profiler.setEnabled(!options.capture.empty() || !options.benchmark.empty());
+    // A window's overlay shows per-pass GPU times, so it profiles too.
+    profiler.setEnabled(!options.capture.empty() || !options.benchmark.empty() || options.window);
 
     // --warmup frames run first and are discarded from the benchmark; --frames
     // counts the frames after them.
@@ -47,10 +49,21 @@ Status runFlythrough(const Options& options) {
         std::filesystem::create_directories(options.record, ec);
         if (ec) return fail("--record ", options.record, ": ", ec.message());
     }
+    // --window: the overlay, the free camera and the controls (--no-overlay
+    // keeps the plain window).
+    std::unique_ptr<WindowController> window;
+    if (options.overlay.value_or(session.windowed())) {
+        auto controller = WindowController::create(run, options);
+        if (!controller) return controller.error();
+        window = std::move(controller.value());
+    }
     uint32_t rendered = 0;
     for (uint32_t frame = 0; frame < frames; ++frame, ++rendered) {
         const bool record = !options.record.empty();
-        if (!run.step(frame, record || (frame + 1 == frames && !options.screenshot.empty()))) break;
+        if (window) window->beforeFrame(frame);
+        const bool shot = window && window->wantsReadback();
+        if (!run.step(frame, shot || record || (frame + 1 == frames && !options.screenshot.empty()))) break;
+        if (window) window->afterFrame(frame);
         if (record) {
             // Waits for the frame: a recording is for looking at, not timing.
             char name[32];
@@ -59,6 +72,7 @@ Status runFlythrough(const Options& options) {
             if (Status ok = writePng(path, {session.width(), session.height(), session.finish()}); !ok) return ok;
         }
     }
+    window.reset();
     const std::vector<uint8_t> pixels = session.finish();
     if (options.renderdocFrame && *options.renderdocFrame >= rendered)
         log::warning("--renderdoc " + std::to_string(*options.renderdocFrame) + ": the run ended after " +

@@ -21,26 +21,32 @@ constexpr uint64_t kSubdivBudgetGpu = 4000000;
 Result<std::unique_ptr<SceneRun>> SceneRun::create(const Options& options, uint32_t frames) {
     std::unique_ptr<SceneRun> run(new SceneRun());
     run->mOptions = options;
+    run->mFrames = frames;
     auto loaded = World::load(options, frames);
     if (!loaded) return loaded.error();
     run->mWorld = std::move(loaded.value());
     auto created = RenderSession::create(options, run->mWorld->terrain());
     if (!created) return created.error();
     run->mSession = std::move(created.value());
-    RenderSession& session = *run->mSession;
+    if (Status ok = run->attachScene(options); !ok) return ok.error();
+    return run;
+}
+
+Status SceneRun::attachScene(const Options& options) {
+    RenderSession& session = *mSession;
     auto settings = session.resolveTessellation(options);
     if (!settings) return settings.error();
-    run->mSettings = settings.value();
-    log::info(std::string("terrain mode ") + terrain::toString(run->mSettings.mode) +
-              (run->mSettings.mode == terrain::TerrainMode::Adaptive
-                   ? std::string(", metric ") + terrain::toString(run->mSettings.metric)
+    mSettings = settings.value();
+    log::info(std::string("terrain mode ") + terrain::toString(mSettings.mode) +
+              (mSettings.mode == terrain::TerrainMode::Adaptive
+                   ? std::string(", metric ") + terrain::toString(mSettings.metric)
                    : std::string()));
     session.setTerrainVisible(options.terrain);
     auto policy = lodPolicyFor(options, session.deviceClass());
     if (!policy) return policy.error();
-    run->mLodPolicy = policy.value();
+    mLodPolicy = policy.value();
 
-    CharacterPopulation* characters = run->mWorld->characters();
+    CharacterPopulation* characters = mWorld->characters();
     if (characters) {
         if (options.characterLevel && *options.characterLevel > session.maxCharacterLevel())
             return fail("--character-level ", formatNumber(*options.characterLevel), ": backend ",
@@ -53,30 +59,78 @@ Result<std::unique_ptr<SceneRun>> SceneRun::create(const Options& options, uint3
         InstancedCrowd* instanced = characters->instancedCrowd();
         if (instanced && session.capabilities().crowd) {
             const uint32_t capacity = std::max(characters->instanceCapacity(), 1u);
-            if (Status ok = session.createCrowd(instanced->desc(characters->assets(), capacity, run->mLodPolicy)); !ok)
+            if (Status ok = session.createCrowd(instanced->desc(characters->assets(), capacity, mLodPolicy)); !ok)
                 return ok.error();
-            characters->useInstancedCrowd();
-            run->mInstanced = instanced;
+            characters->useInstancedCrowd(true);
+            mInstanced = instanced;
         }
     }
-    if (SubdivModels* surfaces = run->mWorld->surfaces()) {
+    if (SubdivModels* surfaces = mWorld->surfaces()) {
         if (options.subdiv.level && *options.subdiv.level > session.capabilities().maxTessFactor)
             return fail("--subdiv-level ", formatNumber(*options.subdiv.level), ": backend ",
                         session.capabilities().name, " tessellates up to level ",
                         formatNumber(session.capabilities().maxTessFactor));
         if (Status ok = session.createSubdivs(*surfaces); !ok) return ok.error();
     }
-    if (SubdivCharacters* subdivCharacters = run->mWorld->subdivCharacters()) {
+    if (SubdivCharacters* subdivCharacters = mWorld->subdivCharacters()) {
         if (!session.capabilities().subdiv)
             return fail("--character-surface ", options.characterSurface, ": backend ", session.capabilities().name,
                         " does not draw Catmull-Clark surfaces (BackendCapabilities::subdiv); use --backend "
                         "hulldomain, or --character-surface planar");
         if (Status ok = session.createSubdivs(*subdivCharacters); !ok) return ok.error();
     }
-    if (const SimulatedCrowd* simulated = run->mWorld->simulatedCrowd())
+    if (const SimulatedCrowd* simulated = mWorld->simulatedCrowd())
         std::printf("%s\n",
                     simulated->drawingMode(session.capabilities().name, session.capabilities().requiresGpu).c_str());
-    return run;
+    return {};
+}
+
+Status SceneRun::switchBackend(const std::string& name) {
+    const uint64_t before = mSession->generation();
+    Status switched = mSession->switchBackend(mOptions, name);
+    // Refused before anything was released: the scene draws on as it was.
+    if (mSession->generation() == before) return switched;
+    // A backend was initialised anew (the new one, or the old one restored):
+    // the characters go back to the per-character path until the crowd
+    // exists on it again, keeping the simulation's state.
+    mInstanced = nullptr;
+    if (CharacterPopulation* characters = mWorld->characters()) characters->useInstancedCrowd(false);
+    mOptions.backend = mSession->capabilities().name;
+    // Levels the user gave for the first backend are clamped to the new one's
+    // maximum instead of failing the switch.
+    Options relaxed = mOptions;
+    relaxed.tessMaxGiven = false;
+    relaxed.tessLevelGiven = false;
+    if (relaxed.characterLevel)
+        relaxed.characterLevel = std::min(*relaxed.characterLevel, mSession->maxCharacterLevel());
+    if (relaxed.subdiv.level) relaxed.subdiv.level = std::min(*relaxed.subdiv.level, mSession->capabilities().maxTessFactor);
+    if (relaxed.terrainMode && !mSession->capabilities().drawsTerrainMode(*relaxed.terrainMode)) relaxed.terrainMode.reset();
+    Status attached = attachScene(relaxed);
+    return switched ? attached : switched;
+}
+
+Status SceneRun::reloadWorld(const Options& options) {
+    auto loaded = World::load(options, mFrames);
+    if (!loaded) return loaded.error();
+    // The old world's characters still hold the backend's handles: it goes
+    // only after the session has released them.
+    std::unique_ptr<World> old = std::move(mWorld);
+    mWorld = std::move(loaded.value());
+    const std::string backend = mSession->capabilities().name;
+    Options next = options;
+    next.backend = backend;
+    const uint64_t before = mSession->generation();
+    Status switched = mSession->switchBackend(next, backend, &mWorld->terrain());
+    if (mSession->generation() == before) {
+        // Refused before anything was released: keep drawing the old world.
+        mWorld = std::move(old);
+        return switched;
+    }
+    mInstanced = nullptr;
+    mOptions = next;
+    old.reset();
+    Status attached = attachScene(next);
+    return switched ? attached : switched;
 }
 
 bool SceneRun::step(uint32_t frame, bool readback) {

@@ -51,6 +51,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
 
 void Buffer::reset() {
     if (!mDevice) return;
+    mDevice->clearName(VK_OBJECT_TYPE_BUFFER, mBuffer);
     vkDestroyBuffer(mDevice->handle(), mBuffer, nullptr);
     mDevice->free(mMemory, mAllocationSize);
     mDevice = nullptr;

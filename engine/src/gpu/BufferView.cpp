@@ -21,14 +21,20 @@ BufferView::BufferView(Device& device, const Buffer& buffer, VkFormat format, Vk
 }
 
 BufferView::~BufferView() {
-    if (mDevice) vkDestroyBufferView(mDevice->handle(), mView, nullptr);
+    if (mDevice) {
+        mDevice->clearName(VK_OBJECT_TYPE_BUFFER_VIEW, mView);
+        vkDestroyBufferView(mDevice->handle(), mView, nullptr);
+    }
 }
 
 BufferView::BufferView(BufferView&& other) noexcept { *this = std::move(other); }
 
 BufferView& BufferView::operator=(BufferView&& other) noexcept {
     if (this != &other) {
-        if (mDevice) vkDestroyBufferView(mDevice->handle(), mView, nullptr);
+        if (mDevice) {
+            mDevice->clearName(VK_OBJECT_TYPE_BUFFER_VIEW, mView);
+            vkDestroyBufferView(mDevice->handle(), mView, nullptr);
+        }
         mDevice = std::exchange(other.mDevice, nullptr);
         mView = std::exchange(other.mView, VK_NULL_HANDLE);
     }

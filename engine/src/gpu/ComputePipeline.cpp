@@ -24,14 +24,20 @@ ComputePipeline::ComputePipeline(Device& device, const PipelineLayout& layout, s
 }
 
 ComputePipeline::~ComputePipeline() {
-    if (mDevice) vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
+    if (mDevice) {
+        mDevice->clearName(VK_OBJECT_TYPE_PIPELINE, mPipeline);
+        vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
+    }
 }
 
 ComputePipeline::ComputePipeline(ComputePipeline&& other) noexcept { *this = std::move(other); }
 
 ComputePipeline& ComputePipeline::operator=(ComputePipeline&& other) noexcept {
     if (this != &other) {
-        if (mDevice) vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
+        if (mDevice) {
+            mDevice->clearName(VK_OBJECT_TYPE_PIPELINE, mPipeline);
+            vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
+        }
         mDevice = std::exchange(other.mDevice, nullptr);
         mPipeline = std::exchange(other.mPipeline, VK_NULL_HANDLE);
     }

@@ -143,6 +143,15 @@ void Device::setName(VkObjectType type, uint64_t handle, const std::string& name
     mFn.setObjectName(mDevice, &info);
 }
 
+void Device::clearName(VkObjectType type, uint64_t handle) const {
+    if (!mFn.setObjectName || handle == 0) return;
+    VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
+    info.objectType = type;
+    info.objectHandle = handle;
+    info.pObjectName = nullptr; // no name: the layer forgets the object's entry
+    mFn.setObjectName(mDevice, &info);
+}
+
 void Device::beginLabel(VkCommandBuffer cmd, const char* name, const float color[4]) const {
     if (!mFn.cmdBeginLabel) return;
     VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
@@ -179,6 +188,7 @@ VkDeviceMemory Device::allocate(const VkMemoryRequirements& req, VkMemoryPropert
 
 void Device::free(VkDeviceMemory memory, VkDeviceSize size) {
     if (!memory) return;
+    clearName(VK_OBJECT_TYPE_DEVICE_MEMORY, memory);
     vkFreeMemory(mDevice, memory, nullptr);
     mAllocatedBytes -= size;
 }
@@ -208,6 +218,7 @@ void Device::submitImmediate(const std::function<void(VkCommandBuffer)>& record,
     TESSERA_VK_CHECK(vkQueueSubmit(mQueue, 1, &submit, fence));
     TESSERA_VK_CHECK(vkWaitForFences(mDevice, 1, &fence, VK_TRUE, UINT64_MAX));
     vkDestroyFence(mDevice, fence, nullptr);
+    clearName(VK_OBJECT_TYPE_COMMAND_BUFFER, cmd);
     vkFreeCommandBuffers(mDevice, mImmediatePool, 1, &cmd);
 }
 

@@ -67,8 +67,14 @@ GpuProfiler::GpuProfiler(Device& device, profiler::Profiler& profiler, uint32_t 
 }
 
 GpuProfiler::~GpuProfiler() {
-    if (mTimestampPool) vkDestroyQueryPool(mDevice.handle(), mTimestampPool, nullptr);
-    if (mStatisticsPool) vkDestroyQueryPool(mDevice.handle(), mStatisticsPool, nullptr);
+    if (mTimestampPool) {
+        mDevice.clearName(VK_OBJECT_TYPE_QUERY_POOL, mTimestampPool);
+        vkDestroyQueryPool(mDevice.handle(), mTimestampPool, nullptr);
+    }
+    if (mStatisticsPool) {
+        mDevice.clearName(VK_OBJECT_TYPE_QUERY_POOL, mStatisticsPool);
+        vkDestroyQueryPool(mDevice.handle(), mStatisticsPool, nullptr);
+    }
 }
 
 void GpuProfiler::beginFrame(VkCommandBuffer cmd, uint32_t slot, uint64_t frameIndex) {

@@ -77,8 +77,13 @@ Image& Image::operator=(Image&& other) noexcept {
 
 void Image::reset() {
     if (!mDevice) return;
+    mDevice->clearName(VK_OBJECT_TYPE_IMAGE_VIEW, mView);
     vkDestroyImageView(mDevice->handle(), mView, nullptr);
-    if (mAliasView) vkDestroyImageView(mDevice->handle(), mAliasView, nullptr);
+    if (mAliasView) {
+        mDevice->clearName(VK_OBJECT_TYPE_IMAGE_VIEW, mAliasView);
+        vkDestroyImageView(mDevice->handle(), mAliasView, nullptr);
+    }
+    mDevice->clearName(VK_OBJECT_TYPE_IMAGE, mImage);
     vkDestroyImage(mDevice->handle(), mImage, nullptr);
     mDevice->free(mMemory, mAllocationSize);
     mDevice = nullptr;

@@ -57,7 +57,17 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) : mDevice(&
     depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
 
     std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
-    for (auto& b : blends) b.colorWriteMask = 0xF;
+    for (auto& b : blends) {
+        b.colorWriteMask = 0xF;
+        if (!desc.alphaBlend) continue;
+        b.blendEnable = VK_TRUE;
+        b.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+        b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        b.colorBlendOp = VK_BLEND_OP_ADD;
+        b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        b.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     blend.attachmentCount = static_cast<uint32_t>(blends.size());
     blend.pAttachments = blends.data();
@@ -90,14 +100,20 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) : mDevice(&
 }
 
 Pipeline::~Pipeline() {
-    if (mDevice) vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
+    if (mDevice) {
+        mDevice->clearName(VK_OBJECT_TYPE_PIPELINE, mPipeline);
+        vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
+    }
 }
 
 Pipeline::Pipeline(Pipeline&& other) noexcept { *this = std::move(other); }
 
 Pipeline& Pipeline::operator=(Pipeline&& other) noexcept {
     if (this != &other) {
-        if (mDevice) vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
+        if (mDevice) {
+            mDevice->clearName(VK_OBJECT_TYPE_PIPELINE, mPipeline);
+            vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
+        }
         mDevice = std::exchange(other.mDevice, nullptr);
         mPipeline = std::exchange(other.mPipeline, VK_NULL_HANDLE);
     }

@@ -31,7 +31,9 @@ PipelineLayout::PipelineLayout(Device& device, std::span<const BindingDesc> bind
 
 PipelineLayout::~PipelineLayout() {
     if (!mDevice) return;
+    mDevice->clearName(VK_OBJECT_TYPE_PIPELINE_LAYOUT, mLayout);
     vkDestroyPipelineLayout(mDevice->handle(), mLayout, nullptr);
+    mDevice->clearName(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, mSetLayout);
     vkDestroyDescriptorSetLayout(mDevice->handle(), mSetLayout, nullptr);
 }
 

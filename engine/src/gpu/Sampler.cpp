@@ -19,14 +19,20 @@ Sampler::Sampler(Device& device, VkFilter filter, VkSamplerAddressMode address, 
 }
 
 Sampler::~Sampler() {
-    if (mDevice) vkDestroySampler(mDevice->handle(), mSampler, nullptr);
+    if (mDevice) {
+        mDevice->clearName(VK_OBJECT_TYPE_SAMPLER, mSampler);
+        vkDestroySampler(mDevice->handle(), mSampler, nullptr);
+    }
 }
 
 Sampler::Sampler(Sampler&& other) noexcept { *this = std::move(other); }
 
 Sampler& Sampler::operator=(Sampler&& other) noexcept {
     if (this != &other) {
-        if (mDevice) vkDestroySampler(mDevice->handle(), mSampler, nullptr);
+        if (mDevice) {
+            mDevice->clearName(VK_OBJECT_TYPE_SAMPLER, mSampler);
+            vkDestroySampler(mDevice->handle(), mSampler, nullptr);
+        }
         mDevice = std::exchange(other.mDevice, nullptr);
         mSampler = std::exchange(other.mSampler, VK_NULL_HANDLE);
     }

@@ -15,7 +15,10 @@ ShaderModule::ShaderModule(Device& device, std::span<const uint32_t> spirv, cons
 }
 
 ShaderModule::~ShaderModule() {
-    if (mModule) vkDestroyShaderModule(mDevice->handle(), mModule, nullptr);
+    if (mModule) {
+        mDevice->clearName(VK_OBJECT_TYPE_SHADER_MODULE, mModule);
+        vkDestroyShaderModule(mDevice->handle(), mModule, nullptr);
+    }
 }
 
 ShaderModule::ShaderModule(ShaderModule&& other) noexcept

@@ -60,6 +60,15 @@ public:
     void setName(VkObjectType type, T handle, const std::string& name) const {
         setName(type, reinterpret_cast<uint64_t>(handle), name);
     }
+    /// Removes the debug name of an object about to be destroyed. The
+    /// validation layer (1.3.239, Debian 12) keeps names of destroyed objects
+    /// otherwise, so a long session that makes and destroys objects (a
+    /// backend switch, a reloaded world) would grow without bound under it.
+    void clearName(VkObjectType type, uint64_t handle) const;
+    template <class T>
+    void clearName(VkObjectType type, T handle) const {
+        clearName(type, reinterpret_cast<uint64_t>(handle));
+    }
 
     /// Opens and closes a labelled region in a command buffer.
     void beginLabel(VkCommandBuffer cmd, const char* name, const float color[4] = nullptr) const;

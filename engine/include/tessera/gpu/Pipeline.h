@@ -33,6 +33,9 @@ struct GraphicsPipelineDesc {
     VkFrontFace frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     bool depthTest = true;
     bool depthWrite = true;
+    /// Straight alpha blending (src alpha, one minus src alpha) on every
+    /// colour target: overlays drawn over the frame.
+    bool alphaBlend = false;
     /// With no fragment output (transform feedback, R2VB-to-buffer passes).
     bool rasterizerDiscard = false;
     std::vector<VkFormat> colorFormats;

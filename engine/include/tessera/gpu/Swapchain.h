@@ -30,6 +30,8 @@ public:
     bool shouldClose() const;
     /// Processes window events; returns true when the framebuffer size changed.
     bool pollEvents();
+    /// The GLFW window, for a host's input handling (the overlay's).
+    GLFWwindow* window() const { return mWindow; }
     uint32_t width() const { return mExtent.width; }
     uint32_t height() const { return mExtent.height; }
 

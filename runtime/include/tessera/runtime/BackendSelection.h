@@ -32,6 +32,16 @@ inline constexpr const char* kBackendPreference[] = {"hulldomain", "streamout", 
 /// Chooses and creates the backend (and device) described by `options`.
 Result<std::unique_ptr<SelectedBackend>> selectBackend(const Options& options);
 
+/// Replaces `selected`'s backend with a new instance of backend `name` on the
+/// device `selected` already holds (loading its plugin from the options'
+/// search path when it is not loaded yet): what switching backends at run
+/// time needs. The old backend is left untouched when this fails, which it
+/// does with a message naming the backend when the plugin is missing, when
+/// the backend cannot run on the device, or when it needs a device and the
+/// session has none (the null backend's sessions) or the other way round.
+/// The new backend is not initialised yet.
+Result<backend::BackendPtr> createBackendOnDevice(SelectedBackend& selected, const Options& options,
+                                                  const std::string& name, backend::BackendCapabilities& caps);
 /// Prints every backend with its capabilities, checked against the device.
 Status listBackends(const Options& options);
 /// Prints the Vulkan devices.

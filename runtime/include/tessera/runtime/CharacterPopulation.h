@@ -36,8 +36,9 @@ public:
     /// (Backend::drawCrowd), or null when it draws only through items().
     virtual InstancedCrowd* instancedCrowd() { return nullptr; }
     /// From now on update() fills instancedCrowd() instead of items() (the
-    /// backend made the crowd).
-    virtual void useInstancedCrowd() {}
+    /// backend made the crowd), or items() again with `instanced` false (the
+    /// backend that made it is being replaced).
+    virtual void useInstancedCrowd(bool /*instanced*/) {}
     /// The most instances instancedCrowd() will have in a frame.
     virtual uint32_t instanceCapacity() const { return 0; }
 };

@@ -50,6 +50,10 @@ struct Options {
     bool help = false;
     bool validation = false;
     bool window = false;
+    /// --overlay / --no-overlay: the Dear ImGui overlay of statistics and
+    /// controls; unset: with --window only. Headless, --overlay draws it into
+    /// the frames (screenshots, and its GPU cost in --benchmark).
+    std::optional<bool> overlay;
     bool wireframe = false;
     uint32_t width = 1280;
     uint32_t height = 720;

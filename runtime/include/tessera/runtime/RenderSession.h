@@ -16,6 +16,8 @@
 #include "tessera/terrain/Terrain.h"
 
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -72,6 +74,36 @@ public:
     /// on the clear colour; craters still land on the height map).
     void setTerrainVisible(bool visible) { mTerrainVisible = visible; }
 
+    /// Replaces the backend with backend `name` on the same device, window
+    /// and target, without restarting: every GPU object of the old backend is
+    /// destroyed and the terrain is uploaded again, as it is now, craters
+    /// included. The caller uploads its characters, crowd and surfaces again
+    /// (SceneRun::switchBackend does). On failure the old backend is restored
+    /// and the error names the backend and the reason.
+    /// With `terrain`, the session draws that terrain from now on (a world
+    /// loaded anew, which must outlive the session).
+    Status switchBackend(const Options& options, const std::string& name, terrain::Terrain* terrain = nullptr);
+    /// Called with each frame's context after the backend's passes and before
+    /// presentation or readback: the window's overlay records itself here.
+    void setOverlayRecorder(std::function<void(gpu::FrameContext&)> recorder) { mOverlay = std::move(recorder); }
+    /// Captures the next frame through RenderDoc when it was loaded
+    /// (--renderdoc); otherwise an error saying why not.
+    Status requestCapture();
+    /// The device frames render on (null for the null backend).
+    gpu::Device* device() const { return mSelected->device.get(); }
+    /// The window of a --window session; null headless.
+    GLFWwindow* window() const { return mSwapchain ? mSwapchain->window() : nullptr; }
+    /// Whether a backend switched away from stays initialised (pipelines,
+    /// its own resources; none of the scene's) so that switching back costs
+    /// only the scene's upload. On by default; off, every switch shuts the
+    /// old backend down and initialises the new one from nothing.
+    void setParkBackends(bool park) { mParkBackends = park; }
+    /// Counts the backends initialised in this session: a switch that
+    /// changes it re-created the scene's GPU objects (even one that failed
+    /// and restored the old backend).
+    uint64_t generation() const { return mGeneration; }
+    /// Device memory the session's device holds now (0 without a device).
+    uint64_t deviceBytes() const { return mSelected->device ? mSelected->device->allocatedBytes() : 0; }
     /// Handles window events; false once the window was closed.
     bool pollWindow();
     /// Records and submits one frame: pending craters into the GPU height
@@ -97,6 +129,18 @@ public:
 
 private:
     RenderSession() = default;
+    /// Initialises the selected backend on the device (unless it already is:
+    /// a parked one) and uploads the terrain.
+    Status initializeBackend(bool alreadyInitialized);
+    enum class Release { Shutdown, Park, Keep };
+    /// Destroys every handle the backend holds; then shuts it down, parks it
+    /// for a switch back (when setParkBackends allows) or keeps it selected.
+    void releaseBackend(Release release);
+
+    struct ParkedBackend {
+        backend::BackendPtr backend;
+        backend::BackendCapabilities capabilities;
+    };
 
     terrain::Terrain* mTerrain = nullptr;
     std::unique_ptr<SelectedBackend> mSelected;
@@ -114,6 +158,11 @@ private:
     uint32_t mWidth = 0;
     uint32_t mHeight = 0;
     std::vector<uint32_t> mVisible;
+    std::function<void(gpu::FrameContext&)> mOverlay;
+    uint32_t mFrameIndex = 0;
+    uint64_t mGeneration = 0;
+    bool mParkBackends = true;
+    std::map<std::string, ParkedBackend> mParked; ///< after mSelected: destroyed before the device
 };
 
 } // namespace tessera::runtime

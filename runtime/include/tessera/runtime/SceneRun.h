@@ -38,6 +38,24 @@ public:
     /// session().finish().
     bool step(uint32_t frame, bool readback);
 
+    /// Re-creates the scene on backend `name` without restarting (the
+    /// session keeps its device, window and target; the world keeps its
+    /// state: craters, the crowd's simulation, the camera). Levels given for
+    /// the old backend are clamped to the new one's. On failure the old
+    /// backend draws on and the error says why.
+    Status switchBackend(const std::string& name);
+    /// Loads the world anew from `options` (another crowd size, other
+    /// meteors) and re-creates the scene on the current backend, without
+    /// restarting. On failure the old world stays and the error says why.
+    Status reloadWorld(const Options& options);
+    /// The options the scene runs with now (the backend after a switch).
+    const Options& options() const { return mOptions; }
+    /// Changes the options later frames draw with (wireframe, LOD colours,
+    /// displacement, levels): what the overlay's controls set.
+    Options& liveOptions() { return mOptions; }
+    /// The terrain's tessellation as frames draw it; changes apply from the
+    /// next frame.
+    terrain::TessellationSettings& tessellation() { return mSettings; }
     World& world() { return *mWorld; }
     RenderSession& session() { return *mSession; }
     const scene::Camera& camera() const { return mCamera; }
@@ -47,8 +65,12 @@ public:
 
 private:
     SceneRun() = default;
+    /// Everything that depends on the backend: the tessellation, the LOD
+    /// policy, the characters, the crowd and the surfaces on the backend.
+    Status attachScene(const Options& options);
 
     Options mOptions;
+    uint32_t mFrames = 0;
     std::unique_ptr<World> mWorld;
     std::unique_ptr<RenderSession> mSession;
     terrain::TessellationSettings mSettings;

@@ -56,7 +56,7 @@ public:
     /// among those in view, through the character path.
     void update(double seconds, const scene::Camera& camera, const CharacterLevels& levels) override;
     InstancedCrowd* instancedCrowd() override { return mInstanced.get(); }
-    void useInstancedCrowd() override { mInstancedActive = mInstanced != nullptr; }
+    void useInstancedCrowd(bool instanced) override { mInstancedActive = instanced && mInstanced != nullptr; }
     uint32_t instanceCapacity() const override { return mCrowd->stats().agents; }
     std::span<const backend::CharacterDrawItem> items() const override { return mPoser.items(); }
     /// Circling the spawn's centre (--orbit-distance, default 30 m), high

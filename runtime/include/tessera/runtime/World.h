@@ -58,6 +58,11 @@ public:
     void update(uint32_t frame);
     /// Fixes the camera at `pose` from now on (as --camera does).
     void fixCamera(const scene::CameraPose& pose) { mFixedPose = pose; }
+    /// Lets the scene's own camera (flythrough or orbit) fly again.
+    void releaseCamera() { mFixedPose.reset(); }
+    /// Lands a crater now (the window's meteor control): the CPU height
+    /// field at once, the GPU copy with the next frame, the crowd's next step.
+    void dropMeteor(const terrain::CraterSplat& splat) { mTerrain->splat(splat); }
     uint32_t impactsLanded() const { return mNextImpact; }
 
 private:
