@@ -156,5 +156,24 @@ TEST(BackendSwitch, RefusalsLeaveTheSceneDrawing) {
     EXPECT_EQ(validationMessages(), 0u);
 }
 
+TEST(BackendSwitch, ReloadWorldWithAnotherCrowd) {
+    // The window's crowd-size control: a new world on the same backend.
+    auto created = SceneRun::create(soakOptions("streamout", "crowd"), 100);
+    ASSERT_TRUE(created) << created.error().message;
+    SceneRun& run = *created.value();
+    EXPECT_TRUE(run.step(0, false));
+    ASSERT_NE(run.world().simulatedCrowd(), nullptr);
+    EXPECT_EQ(run.world().simulatedCrowd()->instanceCapacity(), 64u);
+    Options bigger = run.options();
+    bigger.agents = {200};
+    Status ok = run.reloadWorld(bigger);
+    ASSERT_TRUE(ok) << ok.error().message;
+    EXPECT_EQ(run.world().simulatedCrowd()->instanceCapacity(), 200u);
+    EXPECT_NE(run.instancedCrowd(), nullptr) << "the new crowd is drawn instanced on the GPU again";
+    EXPECT_TRUE(run.step(1, true));
+    EXPECT_FALSE(run.session().finish().empty());
+    EXPECT_EQ(validationMessages(), 0u);
+}
+
 } // namespace
 } // namespace tessera::runtime
