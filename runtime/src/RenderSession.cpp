@@ -297,6 +297,10 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
     info.width = mWidth;
     info.height = mHeight;
     info.wireframe = wireframe;
+    if (mTerrainVisible) {
+        info.shadowCasters = mShadowCasters;
+        info.shadowRegion = mShadowRegion;
+    }
     const bool capture = mRenderDoc && mCaptureFrame == frameIndex;
     if (capture) mRenderDoc->begin(*mSelected->instance);
     {

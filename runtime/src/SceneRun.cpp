@@ -1,6 +1,7 @@
 #include "tessera/runtime/SceneRun.h"
 
 #include "LodSettings.h"
+#include "ShadowCasters.h"
 #include "tessera/core/Log.h"
 #include "tessera/profiler/CpuScope.h"
 #include "tessera/profiler/Profiler.h"
@@ -174,6 +175,15 @@ void SceneRun::renderFrame(uint32_t frame, bool readback) {
         mSubdivDraws.insert(mSubdivDraws.end(), subdivCharacters->draws().begin(), subdivCharacters->draws().end());
         surfaceDraws = mSubdivDraws;
     }
+    // The characters' shadows on the terrain: whoever stands in the square
+    // of ground ahead of the camera.
+    mShadowCasters.clear();
+    glm::vec3 region(0.0f);
+    if (characters) {
+        region = shadowRegionFor(mCamera);
+        characters->shadowCasters(region, kMaxShadowCasters, mShadowCasters);
+    }
+    session.setShadowCasters(mShadowCasters, mShadowCasters.empty() ? glm::vec3(0.0f) : region);
     session.renderFrame(frame, mCamera, mSettings, mOptions.clearColor, mOptions.wireframe, readback,
                         characters ? &draw : nullptr, mInstanced ? &crowdDraw : nullptr, surfaceDraws);
 }

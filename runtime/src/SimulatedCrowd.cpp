@@ -1,5 +1,7 @@
 #include "tessera/runtime/SimulatedCrowd.h"
 
+#include "ShadowCasters.h"
+
 #include "tessera/shaders/CrowdInstance.h"
 #include "CrowdSetup.h"
 #include "tessera/core/Log.h"
@@ -286,6 +288,13 @@ void SimulatedCrowd::update(double, const scene::Camera& camera, const Character
         mPoser.offer(agents.id[i], creature, agentWorld(i, creature), clip, agents.phase[i] * duration);
     }
     mPoser.finish(mAssets);
+}
+
+void SimulatedCrowd::shadowCasters(const glm::vec3& region, uint32_t limit, std::vector<glm::vec4>& out) {
+    out.clear();
+    for (const glm::vec3& p : mCrowd->agents().position)
+        if (insideRegion(region, p)) out.emplace_back(p, kCreatureHeight);
+    keepNearest(region, limit, out);
 }
 
 } // namespace tessera::runtime

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <span>
 
 namespace tessera::gpu {
 class FrameContext; // the shared Vulkan layer's frame; opaque to the data model
@@ -23,6 +24,12 @@ struct FrameInfo {
     uint32_t width = 0;
     uint32_t height = 0;
     bool wireframe = false;
+    /// Characters' shadows on the terrain: the feet (xyz) and height (w) in
+    /// metres of each character standing in `shadowRegion`, the square of
+    /// ground the backend's shadow mask covers (x, y: its min corner in
+    /// world XZ, z: its side; z = 0: no character shadows this frame).
+    std::span<const glm::vec4> shadowCasters;
+    glm::vec3 shadowRegion{0.0f};
     /// The command buffer, target and profiler of this frame; null on the null
     /// backend, which runs the frame logic with no GPU.
     gpu::FrameContext* gpu = nullptr;

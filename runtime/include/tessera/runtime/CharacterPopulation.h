@@ -12,6 +12,7 @@
 #include "tessera/scene/CameraPose.h"
 
 #include <span>
+#include <vector>
 
 namespace tessera::runtime {
 
@@ -39,6 +40,12 @@ public:
     /// backend made the crowd), or items() again with `instanced` false (the
     /// backend that made it is being replaced).
     virtual void useInstancedCrowd(bool /*instanced*/) {}
+    /// What casts shadows on the terrain: the feet (xyz) and height (w), in
+    /// metres, of the characters standing in `region` (x, y: its min corner
+    /// in world XZ, z: its side), the `limit` nearest its centre when there
+    /// are more. By default the characters drawn this frame (items()); the
+    /// crowd gives every agent, drawn instanced or not.
+    virtual void shadowCasters(const glm::vec3& region, uint32_t limit, std::vector<glm::vec4>& out);
     /// The most instances instancedCrowd() will have in a frame.
     virtual uint32_t instanceCapacity() const { return 0; }
 };

@@ -104,6 +104,13 @@ public:
     uint64_t generation() const { return mGeneration; }
     /// Device memory the session's device holds now (0 without a device).
     uint64_t deviceBytes() const { return mSelected->device ? mSelected->device->allocatedBytes() : 0; }
+    /// The characters' shadows the next frames draw on the terrain
+    /// (FrameInfo::shadowCasters, shadowRegion); `casters` must stay valid
+    /// until renderFrame has been called.
+    void setShadowCasters(std::span<const glm::vec4> casters, const glm::vec3& region) {
+        mShadowCasters = casters;
+        mShadowRegion = region;
+    }
     /// Handles window events; false once the window was closed.
     bool pollWindow();
     /// Records and submits one frame: pending craters into the GPU height
@@ -160,6 +167,8 @@ private:
     std::vector<uint32_t> mVisible;
     std::function<void(gpu::FrameContext&)> mOverlay;
     uint32_t mFrameIndex = 0;
+    std::span<const glm::vec4> mShadowCasters;
+    glm::vec3 mShadowRegion{0.0f};
     uint64_t mGeneration = 0;
     bool mParkBackends = true;
     std::map<std::string, ParkedBackend> mParked; ///< after mSelected: destroyed before the device

@@ -77,6 +77,7 @@ private:
     lod::LodPolicy mLodPolicy;
     InstancedCrowd* mInstanced = nullptr;
     scene::Camera mCamera;
+    std::vector<glm::vec4> mShadowCasters; ///< this frame's (CharacterPopulation::shadowCasters)
     std::vector<SubdivDraw> mSubdivDraws; ///< the .obj shapes' and the Catmull-Clark characters' draws
 };
 
