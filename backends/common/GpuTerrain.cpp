@@ -1,5 +1,6 @@
 #include "GpuTerrain.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cstring>
 
@@ -53,6 +54,20 @@ GpuTerrain::GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain) : m
     mHeightScratch = gpu::Image(device, image);
     mSampler = gpu::Sampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "terrain.heightSampler");
 
+    // Shadows are soft and filtered bilinearly, so a texel of up to two
+    // height samples is enough and keeps the march's cost bounded.
+    gpu::ImageDesc sun;
+    sun.width = field.width();
+    sun.height = field.height();
+    while (sun.width > 1024 || sun.height > 1024) {
+        sun.width = std::max(1u, sun.width / 2);
+        sun.height = std::max(1u, sun.height / 2);
+    }
+    sun.format = VK_FORMAT_R8_UNORM;
+    sun.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    sun.name = "terrain.sunVisibility";
+    mSunVisibility = gpu::Image(device, sun);
+
     const glm::vec2 quad[4] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}, {1.0f, 1.0f}};
     const uint32_t indices[6] = {0, 2, 1, 1, 2, 3};
     mQuadVertices = gpu::Buffer(device, sizeof quad, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
@@ -76,6 +91,16 @@ GpuTerrain::GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain) : m
         mSlots[s].patchLevels = gpu::Buffer(device, patchCount() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                             gpu::MemoryUsage::GpuOnly, "terrain.patchLevels" + suffix);
     }
+}
+
+bool GpuTerrain::sunVisibilityStale(const glm::vec3& sun) const {
+    // A sun that moved less than ~0.06 degrees casts the same shadows.
+    return !mSunVisibilityValid || glm::dot(sun, mSunVisibilityFor) < 0.9999995f;
+}
+
+void GpuTerrain::markSunVisibility(const glm::vec3& sun) {
+    mSunVisibilityFor = sun;
+    mSunVisibilityValid = true;
 }
 
 gpu::Buffer& GpuTerrain::writeVisiblePatches(uint32_t slot, std::span<const uint32_t> patches) {

@@ -41,6 +41,17 @@ public:
     /// Same size, R16_UINT; holds the region a splat reads from.
     gpu::Image& heightScratch() { return mHeightScratch; }
     gpu::Sampler& sampler() { return mSampler; }
+    /// R8_UNORM sun-visibility (horizon) map over the same extent as the
+    /// height map, at most 1024 texels a side (TerrainSunPass renders it);
+    /// SHADER_READ_ONLY_OPTIMAL once rendered.
+    gpu::Image& sunVisibility() { return mSunVisibility; }
+    /// Whether the map must be redrawn for `sun`: never drawn yet, the height
+    /// map changed (invalidateSunVisibility), or the sun moved.
+    bool sunVisibilityStale(const glm::vec3& sun) const;
+    /// Records that the map now holds the visibility of `sun`.
+    void markSunVisibility(const glm::vec3& sun);
+    /// Craters changed the height map: redraw the map before the next draw.
+    void invalidateSunVisibility() { mSunVisibilityValid = false; }
     /// One control-mesh quad in patch-local [0,1]^2 (4 vertices, 6 indices),
     /// instanced once per visible patch for the untessellated draw.
     gpu::Buffer& quadVertices() { return mQuadVertices; }
@@ -68,6 +79,9 @@ private:
     gpu::Image mHeightMap;
     gpu::Image mHeightScratch;
     gpu::Sampler mSampler;
+    gpu::Image mSunVisibility;
+    glm::vec3 mSunVisibilityFor{0.0f};
+    bool mSunVisibilityValid = false;
     gpu::Buffer mQuadVertices;
     gpu::Buffer mQuadIndices;
     struct Slot {

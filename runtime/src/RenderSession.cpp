@@ -46,6 +46,8 @@ Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& opti
     }
 
     session->mWidth = options.width;
+    session->mLook = options.look;
+    session->mSunDirection = options.sunDirection;
     session->mHeight = options.height;
     gpu::Device* device = session->mSelected->device.get();
     if (device) {
@@ -204,6 +206,8 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
     info.width = mWidth;
     info.height = mHeight;
     info.wireframe = wireframe;
+    info.look = mLook;
+    info.sunDirection = mSunDirection;
     const bool capture = mRenderDoc && mCaptureFrame == frameIndex;
     if (capture) mRenderDoc->begin(*mSelected->instance);
     {

@@ -12,9 +12,22 @@ struct TerrainUniforms {
 };
 TS_CHECK_SIZE(TerrainUniforms, 48)
 
+// Push constants of the sun-visibility pass (terrain_sun.frag), which marches
+// the height map towards the sun from every texel of the visibility map.
+struct TerrainSunParams {
+    vec4 sun;   // xyz: unit vector towards the sun, w: penumbra half-width (radians)
+    vec4 march; // x: steps, y: first step (m), z: growth per step, w: height bias (m)
+    vec4 map;   // xy: 1 / the visibility map's size (texels), zw: unused
+};
+TS_CHECK_SIZE(TerrainSunParams, 48)
+
 TS_NAMESPACE_END
 
 #define TS_BINDING_TERRAIN 1
 #define TS_BINDING_HEIGHTMAP 2
+// The sun-visibility (horizon) map the terrain's fragment shading samples
+// (terrain_shading.glsl); numbered past the tessellation (3..9) and crowd
+// (10..22) bindings so every terrain layout can declare it.
+#define TS_BINDING_SUN_VISIBILITY 24
 
 #endif

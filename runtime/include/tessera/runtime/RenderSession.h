@@ -71,6 +71,10 @@ public:
     /// Whether frames draw the terrain (--no-terrain leaves characters alone
     /// on the clear colour; craters still land on the height map).
     void setTerrainVisible(bool visible) { mTerrainVisible = visible; }
+    /// How the next frames are shaded (Options::look at creation); the
+    /// terrain benchmark switches it to measure both looks in one run.
+    void setLook(backend::Look look) { mLook = look; }
+    backend::Look look() const { return mLook; }
 
     /// Handles window events; false once the window was closed.
     bool pollWindow();
@@ -111,6 +115,8 @@ private:
     backend::CrowdHandle mCrowd;
     std::vector<backend::SubdivHandle> mSubdivs;
     bool mTerrainVisible = true;
+    backend::Look mLook = backend::Look::Full;
+    glm::vec3 mSunDirection{0.4f, 0.8f, 0.3f};
     uint32_t mWidth = 0;
     uint32_t mHeight = 0;
     std::vector<uint32_t> mVisible;
