@@ -45,7 +45,8 @@ Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
                                   {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
                                    {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
                                    {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
-                                   {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages}},
+                                   {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
+                                   {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages}},
                                   0, 0, caps.name + ".terrainLowres.layout");
 
     gpu::GraphicsPipelineDesc desc;
@@ -88,7 +89,7 @@ void BasicTerrainBackend::shutdown() {
 
 Result<backend::TerrainHandle> BasicTerrainBackend::createTerrain(const backend::TerrainDesc& desc) {
     if (!desc.terrain) return fail("createTerrain: no terrain");
-    auto created = GpuTerrain::create(*mDevice, *desc.terrain);
+    auto created = GpuTerrain::create(*mDevice, *desc.terrain, desc.detailTextures);
     if (!created) return created.error();
     mTerrains.push_back(std::move(created.value()));
     return backend::TerrainHandle{static_cast<uint32_t>(mTerrains.size() - 1)};
@@ -171,7 +172,9 @@ void BasicTerrainBackend::pushTerrainDescriptors(VkPipelineBindPoint bindPoint, 
                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorImageInfo sunInfo{terrain.sampler().handle(), terrain.sunVisibility().view(),
                                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    std::vector<VkWriteDescriptorSet> writes(4);
+    VkDescriptorImageInfo detailInfo{terrain.detailSampler().handle(), terrain.detailTextures().view(),
+                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    std::vector<VkWriteDescriptorSet> writes(5);
     for (auto& w : writes) {
         w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         w.descriptorCount = 1;
@@ -188,6 +191,9 @@ void BasicTerrainBackend::pushTerrainDescriptors(VkPipelineBindPoint bindPoint, 
     writes[3].dstBinding = TS_BINDING_SUN_VISIBILITY;
     writes[3].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     writes[3].pImageInfo = &sunInfo;
+    writes[4].dstBinding = TS_BINDING_DETAIL;
+    writes[4].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writes[4].pImageInfo = &detailInfo;
     writes.insert(writes.end(), extra.begin(), extra.end());
     mDevice->fn().cmdPushDescriptorSet(mFrame->cmd(), bindPoint, layout.handle(), 0, static_cast<uint32_t>(writes.size()),
                                        writes.data());

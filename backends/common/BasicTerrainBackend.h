@@ -56,9 +56,9 @@ protected:
     void suspendMainPass();
     /// Draws the visible patches of `terrain` as the untessellated control mesh.
     void drawControlMesh(GpuTerrain& terrain, std::span<const uint32_t> patches, const char* passName);
-    /// Pushes the frame, terrain, height-map and sun-visibility bindings
-    /// (set 0: 0..2 and TS_BINDING_SUN_VISIBILITY) plus `extra` writes for
-    /// `layout`, which must declare all four.
+    /// Pushes the frame, terrain, height-map, sun-visibility and detail
+    /// bindings (set 0: 0..2, TS_BINDING_SUN_VISIBILITY, TS_BINDING_DETAIL)
+    /// plus `extra` writes for `layout`, which must declare all five.
     void pushTerrainDescriptors(VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout, GpuTerrain& terrain,
                                 std::span<const VkWriteDescriptorSet> extra = {});
     /// Pixels one metre covers seen face-on from one metre away (the metrics' scale).

@@ -27,9 +27,11 @@ shader::FrameUniforms buildFrameUniforms(const backend::FrameInfo& frame) {
     u.viewport = glm::vec4(w, h, 1.0f / w, 1.0f / h);
     u.sunColor = glm::vec4(kSunRadiance, std::cos(kSunDiscRadians * 0.5f));
     if (frame.look == backend::Look::Full) {
-        // The fog's colour is the sky's (sky_atmosphere.glsl); rgb unused.
+        // The fog's colour is the sky's (sky_atmosphere.glsl). Its density
+        // falls off with height; the shaders integrate it from the camera's.
+        const float atCamera = kFogDensity * std::exp(-kFogFalloff * (frame.cameraPosition.y - kFogReferenceHeight));
         u.fogColor = glm::vec4(glm::vec3(frame.clearColor), kFogDensity);
-        u.look = glm::vec4(float(TS_LOOK_FULL), kExposure, kFogFalloff, kFogReferenceHeight);
+        u.look = glm::vec4(float(TS_LOOK_FULL), kExposure, kFogFalloff, atCamera);
     } else {
         // Fog fades to the clear colour, so the far edge of the terrain blends into the sky.
         u.fogColor = glm::vec4(glm::vec3(frame.clearColor), 0.00012f);

@@ -1,5 +1,7 @@
 #include "tessera/runtime/RenderSession.h"
 
+#include "TerrainDetailTextures.h"
+
 #include "tessera/runtime/World.h"
 #include "tessera/core/Log.h"
 #include "tessera/profiler/CpuScope.h"
@@ -72,7 +74,17 @@ Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& opti
     // The upload copies the CPU height field as it is now, craters included,
     // so the splats still queued (--splat) must not be applied a second time.
     (void)terrain.takePendingSplats();
-    auto handle = backend.createTerrain({&terrain});
+    // The detail textures are content like the height map: a missing or
+    // broken file ends the run with its name rather than a flat terrain.
+    auto detail = loadTerrainDetailTextures(options.contentDir);
+    if (!detail) {
+        backend.shutdown();
+        return detail.error();
+    }
+    backend::TerrainDesc desc;
+    desc.terrain = &terrain;
+    desc.detailTextures = detail.value();
+    auto handle = backend.createTerrain(desc);
     if (!handle) {
         backend.shutdown();
         return handle.error();

@@ -33,7 +33,9 @@ vec3 tsSkyRadiance(vec3 dir) {
     float mu = dot(dir, sun);
     float up = max(dir.y, 0.0);
     // Optical depth ~ 1/cos(zenith angle): the horizon sees the most air.
-    float horizonness = pow(1.0 - up, 7.0);
+    float x = 1.0 - up;
+    float x2 = x * x;
+    float horizonness = x2 * x2 * x2 * x; // (1 - up)^7, without pow's exp2(log2)
     const vec3 zenith = vec3(0.030, 0.105, 0.40);
     const vec3 horizon = vec3(0.46, 0.60, 0.80);
     vec3 sky = mix(zenith, horizon, horizonness);
@@ -61,7 +63,8 @@ vec3 tsSunDisc(vec3 dir) {
 vec3 tsFogColor(vec3 dir) {
     vec3 skyDir = normalize(vec3(dir.x, max(dir.y, 0.0), dir.z) + vec3(0.0, 1e-4, 0.0));
     float mu = max(dot(dir, tsSunDirection()), 0.0);
-    return tsSkyRadiance(skyDir) + frame.sunColor.rgb * 0.12 * pow(mu, 12.0);
+    float mu4 = (mu * mu) * (mu * mu);
+    return tsSkyRadiance(skyDir) + frame.sunColor.rgb * 0.12 * (mu4 * mu4 * mu4); // mu^12
 }
 
 // Fogs the linear radiance `color` of a surface at `worldPos`. The plain look
@@ -75,8 +78,9 @@ vec3 tsApplyFog(vec3 color, vec3 worldPos) {
     }
     vec3 dir = toPoint / max(dist, 1e-4);
     float falloff = frame.look.z;
-    // Density at the camera, then the integral of exp(-falloff * dy) along the ray.
-    float density = frame.fogColor.a * exp(-falloff * (frame.cameraPosition.y - frame.look.w));
+    // Density at the camera (look.w, computed once on the host), then the
+    // integral of exp(-falloff * dy) along the ray.
+    float density = frame.look.w;
     float dy = falloff * toPoint.y;
     float path = abs(dy) > 1e-4 ? (1.0 - exp(-dy)) / dy : 1.0;
     float opticalDepth = density * dist * path;

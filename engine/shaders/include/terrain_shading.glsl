@@ -3,10 +3,11 @@
 // grass low and flat, snow on high flat ground with a procedural edge.
 //
 // Two looks (FrameUniforms::look, docs/LOOKS.md). Plain is the shading from
-// before the looks, kept bit for bit. Full shades in linear light: the same
-// material blend from linear albedos with more macro variation, the sun
-// masked by the sun-visibility (horizon) map for soft self-shadowing, sky
-// light from the hemisphere, and the aerial-perspective fog.
+// before the looks. Full shades in linear light: the same material blend with
+// tileable detail textures (triplanar rock on steep slopes, faded to their
+// averages with distance), the sun masked by the sun-visibility (horizon) map
+// for soft self-shadowing, sky light from the hemisphere, and the
+// aerial-perspective fog.
 #ifndef TERRAIN_SHADING_GLSL
 #define TERRAIN_SHADING_GLSL
 #include "common_frame.glsl"
@@ -53,21 +54,70 @@ vec3 shadeTerrainPlain(vec3 worldPos, vec3 normal) {
     return mix(color, frame.fogColor.rgb, clamp(fog, 0.0, 1.0));
 }
 
-// Linear albedos (measured-looking reflectances, not the plain look's
-// display values): dry grass, loam, granite, old snow.
+// The detail albedo textures (tessera-texgen's, an sRGB array: the sampler
+// returns linear values), one layer per material (TS_DETAIL_*).
+layout(set = 0, binding = TS_BINDING_DETAIL) uniform sampler2DArray detailMaps;
+
+// Metres one repeat of a detail texture covers.
+const float kDetailTileMetres = 24.0;
+// The textures fade into their average colours between these distances: past
+// them a texel is smaller than a pixel, mips average it anyway, and skipping
+// the samples keeps distant pixels cheap on lavapipe.
+const float kDetailFadeStart = 250.0;
+const float kDetailFadeEnd = 700.0;
+// A material weighing less than this in a pixel is not sampled.
+const float kDetailMinWeight = 0.02;
+
+vec3 terrainDetailLayer(vec2 uv, int layer) {
+    return texture(detailMaps, vec3(uv, float(layer))).rgb;
+}
+
+// Rock seen triplanar: on a cliff the top-down projection would stretch
+// into streaks, so each of the three projections weighs by how squarely the
+// surface faces its axis (sharpened), and faint ones are skipped.
+vec3 terrainDetailRock(vec3 worldPos, vec3 n) {
+    vec3 w = n * n;
+    w *= w;
+    w /= (w.x + w.y + w.z);
+    vec3 p = worldPos / kDetailTileMetres;
+    vec3 sum = vec3(0.0);
+    float used = 0.0;
+    if (w.y > kDetailMinWeight) { sum += w.y * terrainDetailLayer(p.xz, TS_DETAIL_ROCK); used += w.y; }
+    if (w.x > kDetailMinWeight) { sum += w.x * terrainDetailLayer(p.zy, TS_DETAIL_ROCK); used += w.x; }
+    if (w.z > kDetailMinWeight) { sum += w.z * terrainDetailLayer(p.xy, TS_DETAIL_ROCK); used += w.z; }
+    return sum / max(used, 1e-4);
+}
+
+// The full look's albedo (linear): the plain look's blend of the same four
+// materials by slope, height and noise, each material from its detail
+// texture near the camera and its average colour far away.
 vec3 terrainAlbedoFull(vec3 worldPos, vec3 normal) {
-    const TerrainMaterial full = TerrainMaterial(vec3(0.038, 0.082, 0.014), vec3(0.080, 0.064, 0.032),
-                                                 vec3(0.150, 0.135, 0.120), vec3(0.80, 0.83, 0.88));
     float detail = terrainDetail(worldPos);
-    vec3 albedo = terrainAlbedoFrom(full, worldPos, normal, detail);
-    // Macro variation a kilometre across breaks the repetition of the blend.
-    float macro = valueNoise(worldPos.xz * 0.0021);
-    albedo *= 0.78 + 0.44 * macro;
-    // Fine speckle, faded out with distance before it can shimmer.
-    float dist = length(worldPos - frame.cameraPosition.xyz);
-    float speckle = valueNoise(worldPos.xz * 1.7) - 0.5;
-    albedo *= 1.0 + speckle * 0.35 * (1.0 - smoothstep(60.0, 400.0, dist));
-    return albedo;
+    float slope = 1.0 - normal.y;
+    float heightFraction = worldPos.y / max(terrain.worldSize.z, 1.0);
+    float toDirt = smoothstep(0.45, 0.8, detail + heightFraction * 0.6);
+    float toRock = smoothstep(0.18, 0.32, slope + (detail - 0.5) * 0.08);
+    float snowLine = 0.62 + (detail - 0.5) * 0.12;
+    float toSnow = smoothstep(snowLine, snowLine + 0.06, heightFraction) * (1.0 - smoothstep(0.25, 0.45, slope));
+
+    vec3 grass = terrain.detailAverage[TS_DETAIL_GRASS].rgb;
+    vec3 dirt = terrain.detailAverage[TS_DETAIL_DIRT].rgb;
+    vec3 rock = terrain.detailAverage[TS_DETAIL_ROCK].rgb;
+    vec3 snow = terrain.detailAverage[TS_DETAIL_SNOW].rgb;
+    float fade = smoothstep(kDetailFadeStart, kDetailFadeEnd, length(worldPos - frame.cameraPosition.xyz));
+    if (fade < 1.0) {
+        vec2 uv = worldPos.xz / kDetailTileMetres;
+        float ground = (1.0 - toRock) * (1.0 - toSnow);
+        if ((1.0 - toDirt) * ground > kDetailMinWeight)
+            grass = mix(terrainDetailLayer(uv, TS_DETAIL_GRASS), grass, fade);
+        if (toDirt * ground > kDetailMinWeight) dirt = mix(terrainDetailLayer(uv, TS_DETAIL_DIRT), dirt, fade);
+        if (toRock * (1.0 - toSnow) > kDetailMinWeight) rock = mix(terrainDetailRock(worldPos, normal), rock, fade);
+        if (toSnow > kDetailMinWeight) snow = mix(terrainDetailLayer(uv, TS_DETAIL_SNOW), snow, fade);
+    }
+    vec3 albedo = mix(mix(mix(grass, dirt, toDirt), rock, toRock), snow, toSnow);
+    // The blend's own noise also varies the brightness at the kilometre
+    // scale, where the textures have faded: no extra noise evaluations.
+    return albedo * (0.8 + 0.4 * detail);
 }
 
 float terrainSunVisibility(vec3 worldPos) {
