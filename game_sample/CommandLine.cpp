@@ -36,6 +36,11 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
         if (!color) return color.error();
         o.clearColor = color.value();
     }
+    if (given("--sun")) {
+        auto sun = parseSun(t.sun);
+        if (!sun) return sun.error();
+        o.sunDirection = sun.value();
+    }
     if (given("--camera")) {
         auto pose = scene::parseCameraPose(t.camera);
         if (!pose) return pose.error();
@@ -61,6 +66,10 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
         const char* const views[] = {"shaded", "patches", "levels", "mips"};
         for (uint32_t v = 0; v < 4; ++v)
             if (t.subdivView == views[v]) o.subdiv.view = v;
+    }
+    if (given("--look")) {
+        o.look = t.look == "plain" ? backend::Look::Plain : backend::Look::Full;
+        o.benchBothLooks = t.look == "both";
     }
     if (given("--sculpt")) o.subdiv.sculpt = t.sculpt == "raise" ? 1 : -1;
     if (given("--terrain-mode")) o.terrainMode = terrain::parseTerrainMode(t.terrainMode);
@@ -149,6 +158,8 @@ Result<Options> parseCommandLine(const std::vector<std::string>& args) {
                     "--model FILE.glb (with FILE.cctiles beside it)");
     if (o.bench == "terrain" && o.scene != "terrain")
         return fail("--bench terrain measures the terrain; drop --scene ", o.scene);
+    if (o.benchBothLooks && o.bench != "terrain")
+        return fail("--look both measures the two looks side by side in --bench terrain; give plain or full here");
     if (!o.tessTargetGiven) o.tessellation.targetPixels = terrain::defaultTargetPixels(o.tessellation.metric);
     if (o.window && !o.record.empty()) return fail("--record writes headless frames; drop --window");
     if (o.window && !o.screenshot.empty() && o.frames == 0)

@@ -101,6 +101,13 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
     count("--seed", o.seed, 0, UINT32_MAX, "N", "camera path, meteor and crowd spawn seed (default 1)");
     text("--camera", t.camera, "x,y,z,yaw,pitch", "fixed view (degrees) instead of the flythrough");
     flag("--wireframe", o.wireframe, "draw wireframe");
+    choice("--look", t.look, {"plain", "full", "both"}, "L",
+           "full (default): analytic sky, aerial-perspective fog, terrain sun shadows, filmic tone mapping | "
+           "plain: the flat shading from before, to compare | both (--bench terrain only): every row in both "
+           "looks, with the full look's cost (docs/LOOKS.md)");
+    text("--sun", t.sun, "az,el",
+         "the sun's azimuth (degrees from +X towards +Z) and elevation (1 to 90 degrees); default 36.9,58 "
+         "(shadows, sky and fog follow it)");
     count("--meteors", o.meteors, 0, 10000, "N",
           "a meteor shower of N impacts during the flythrough (the crowd scene: 4 unless given; 0 for none), "
           "deterministic by --seed; craters deform the terrain (in the crowd scene they land among the agents)");

@@ -52,6 +52,28 @@ Result<glm::vec3> parseColor(const std::string& text) {
     return color;
 }
 
+Result<glm::vec3> parseSun(const std::string& text) {
+    const auto bad = [&] {
+        return fail("--sun expects azimuth,elevation in degrees (azimuth from +X towards +Z, elevation 1 to 90), got \"",
+                    text, "\"");
+    };
+    float values[2] = {};
+    std::stringstream stream(text);
+    std::string part;
+    int n = 0;
+    while (std::getline(stream, part, ',')) {
+        char* end = nullptr;
+        const float v = std::strtof(part.c_str(), &end);
+        if (n >= 2 || part.empty() || *end != '\0' || !std::isfinite(v)) return bad();
+        values[n++] = v;
+    }
+    if (n != 2 || values[1] < 1.0f || values[1] > 90.0f) return bad();
+    const float azimuth = glm::radians(values[0]);
+    const float elevation = glm::radians(values[1]);
+    return glm::vec3(std::cos(elevation) * std::cos(azimuth), std::sin(elevation),
+                     std::cos(elevation) * std::sin(azimuth));
+}
+
 Result<terrain::CraterSplat> parseSplat(const std::string& text) {
     std::vector<float> values;
     std::stringstream stream(text);

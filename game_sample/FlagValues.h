@@ -23,6 +23,9 @@ bool isObjFile(const std::string& path);
 Result<std::vector<uint32_t>> parseAgents(const std::string& text);
 /// --clear-color r,g,b, each in [0,1].
 Result<glm::vec3> parseColor(const std::string& text);
+/// --sun AZ,EL: the unit vector towards a sun at azimuth AZ (degrees from +X
+/// towards +Z) and elevation EL (1 to 90 degrees).
+Result<glm::vec3> parseSun(const std::string& text);
 /// --splat x,z,radius[,depth] in metres.
 Result<terrain::CraterSplat> parseSplat(const std::string& text);
 /// `flag`'s "A" or "A:B" (a value, or a sweep from A to B over the run),

@@ -44,7 +44,9 @@ Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
     mLayout = gpu::PipelineLayout(*mDevice,
                                   {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
                                    {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
-                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages}},
+                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
+                                   {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
+                                   {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages}},
                                   0, 0, caps.name + ".terrainLowres.layout");
 
     gpu::GraphicsPipelineDesc desc;
@@ -66,6 +68,9 @@ Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
         mWirePipeline = gpu::Pipeline(*mDevice, desc);
     }
     mSplatPass = TerrainSplatPass(*mDevice, caps.name);
+    mSunPass = TerrainSunPass(*mDevice, caps.name);
+    mSkyPass = SkyPass(*mDevice, caps.name, static_cast<VkFormat>(info.colorFormat),
+                       static_cast<VkFormat>(info.depthFormat));
     return initializeTechnique(info);
 }
 
@@ -74,6 +79,8 @@ void BasicTerrainBackend::shutdown() {
     mTerrains.clear();
     shutdownTechnique();
     mSplatPass = {};
+    mSunPass = {};
+    mSkyPass = {};
     mFillPipeline = {};
     mWirePipeline = {};
     mLayout = {};
@@ -82,7 +89,7 @@ void BasicTerrainBackend::shutdown() {
 
 Result<backend::TerrainHandle> BasicTerrainBackend::createTerrain(const backend::TerrainDesc& desc) {
     if (!desc.terrain) return fail("createTerrain: no terrain");
-    auto created = GpuTerrain::create(*mDevice, *desc.terrain);
+    auto created = GpuTerrain::create(*mDevice, *desc.terrain, desc.detailTextures);
     if (!created) return created.error();
     mTerrains.push_back(std::move(created.value()));
     return backend::TerrainHandle{static_cast<uint32_t>(mTerrains.size() - 1)};
@@ -117,6 +124,7 @@ void BasicTerrainBackend::splatTerrain(backend::TerrainHandle handle, std::span<
     // pass (and before this frame's factor passes) reads it.
     suspendMainPass();
     mSplatPass.record(*mFrame, *terrain, splats);
+    terrain->invalidateSunVisibility(); // the new craters cast and catch shadows
     mReport.splatsApplied += static_cast<uint32_t>(splats.size());
 }
 
@@ -141,6 +149,11 @@ void BasicTerrainBackend::suspendMainPass() {
 void BasicTerrainBackend::drawTerrain(backend::TerrainHandle handle, const backend::TerrainDrawInfo& draw) {
     GpuTerrain* terrain = find(handle);
     if (!terrain) return;
+    // The sun-visibility map renders into its own target: before the main
+    // pass and the backend's own passes, after this frame's splats. Kept
+    // current in the plain look too, since every terrain layout binds it.
+    suspendMainPass();
+    mSunPass.update(*mFrame, *terrain, glm::normalize(mFrameInfo.sunDirection));
     const auto mode = draw.tessellation.mode;
     if (mode == backend::TerrainMode::LowRes || !capabilities(nullptr).drawsTerrainMode(mode)) {
         drawControlMesh(*terrain, draw.visiblePatches, "terrain.lowres");
@@ -157,7 +170,11 @@ void BasicTerrainBackend::pushTerrainDescriptors(VkPipelineBindPoint bindPoint, 
     VkDescriptorBufferInfo terrainInfo{terrain.uniformBuffer().handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorImageInfo heightInfo{terrain.sampler().handle(), terrain.heightMap().view(),
                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    std::vector<VkWriteDescriptorSet> writes(3);
+    VkDescriptorImageInfo sunInfo{terrain.sampler().handle(), terrain.sunVisibility().view(),
+                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkDescriptorImageInfo detailInfo{terrain.detailSampler().handle(), terrain.detailTextures().view(),
+                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    std::vector<VkWriteDescriptorSet> writes(5);
     for (auto& w : writes) {
         w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         w.descriptorCount = 1;
@@ -171,6 +188,12 @@ void BasicTerrainBackend::pushTerrainDescriptors(VkPipelineBindPoint bindPoint, 
     writes[2].dstBinding = TS_BINDING_HEIGHTMAP;
     writes[2].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     writes[2].pImageInfo = &heightInfo;
+    writes[3].dstBinding = TS_BINDING_SUN_VISIBILITY;
+    writes[3].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writes[3].pImageInfo = &sunInfo;
+    writes[4].dstBinding = TS_BINDING_DETAIL;
+    writes[4].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writes[4].pImageInfo = &detailInfo;
     writes.insert(writes.end(), extra.begin(), extra.end());
     mDevice->fn().cmdPushDescriptorSet(mFrame->cmd(), bindPoint, layout.handle(), 0, static_cast<uint32_t>(writes.size()),
                                        writes.data());
@@ -244,6 +267,8 @@ Result<std::vector<uint16_t>> BasicTerrainBackend::readTerrainHeights(backend::T
 
 void BasicTerrainBackend::endFrame() {
     ensureMainPass(); // a frame with nothing drawn still clears the target
+    // The sky last, where nothing else drew (the depth test keeps the rest).
+    if (mFrameInfo.look == backend::Look::Full) mSkyPass.record(*mFrame, mFrameUniforms);
     mFrame->target().endRendering(mFrame->cmd());
     mMainPassOpen = false;
     mLastReport = mReport;

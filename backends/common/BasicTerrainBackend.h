@@ -11,7 +11,9 @@
 /// stream-out, compute) before it.
 
 #include "GpuTerrain.h"
+#include "SkyPass.h"
 #include "TerrainSplatPass.h"
+#include "TerrainSunPass.h"
 #include "tessera/backend/Backend.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"
@@ -54,8 +56,9 @@ protected:
     void suspendMainPass();
     /// Draws the visible patches of `terrain` as the untessellated control mesh.
     void drawControlMesh(GpuTerrain& terrain, std::span<const uint32_t> patches, const char* passName);
-    /// Pushes the frame, terrain and height-map bindings (set 0, bindings
-    /// 0..2) plus `extra` writes for `layout`.
+    /// Pushes the frame, terrain, height-map, sun-visibility and detail
+    /// bindings (set 0: 0..2, TS_BINDING_SUN_VISIBILITY, TS_BINDING_DETAIL)
+    /// plus `extra` writes for `layout`, which must declare all five.
     void pushTerrainDescriptors(VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout, GpuTerrain& terrain,
                                 std::span<const VkWriteDescriptorSet> extra = {});
     /// Pixels one metre covers seen face-on from one metre away (the metrics' scale).
@@ -80,6 +83,8 @@ private:
     gpu::Pipeline mFillPipeline;
     gpu::Pipeline mWirePipeline;
     TerrainSplatPass mSplatPass;
+    TerrainSunPass mSunPass;
+    SkyPass mSkyPass;
     std::vector<std::unique_ptr<GpuTerrain>> mTerrains;
     bool mMainPassOpen = false;
     bool mMainPassStarted = false;

@@ -1,11 +1,13 @@
 #include "GpuTerrain.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cstring>
 
 namespace tessera::backends {
 
-Result<std::unique_ptr<GpuTerrain>> GpuTerrain::create(gpu::Device& device, const terrain::Terrain& terrain) {
+Result<std::unique_ptr<GpuTerrain>> GpuTerrain::create(gpu::Device& device, const terrain::Terrain& terrain,
+                                                      std::span<const Rgba8Image> detailTextures) {
     VkFormatProperties props{};
     vkGetPhysicalDeviceFormatProperties(device.physical(), VK_FORMAT_R16_UNORM, &props);
     const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
@@ -18,10 +20,13 @@ Result<std::unique_ptr<GpuTerrain>> GpuTerrain::create(gpu::Device& device, cons
         return fail("device ", device.features().deviceName,
                     " cannot render to and linearly sample R16_UNORM images (and their R16_UINT views), which the "
                     "terrain's dynamic height map needs");
-    return std::make_unique<GpuTerrain>(device, terrain);
+    auto detail = DetailTextureArray::create(device, detailTextures);
+    if (!detail) return detail.error();
+    return std::make_unique<GpuTerrain>(device, terrain, std::move(detail.value()));
 }
 
-GpuTerrain::GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain) : mSource(terrain) {
+GpuTerrain::GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain, DetailTextureArray detail)
+    : mSource(terrain), mDetail(std::move(detail.image)) {
     const terrain::HeightField& field = terrain.field();
     const float spacing = field.scale().horizontalSpacing;
     const glm::vec2 size = field.worldSize();
@@ -30,6 +35,7 @@ GpuTerrain::GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain) : m
     mUniforms.heightTexel = glm::vec4(1.0f / float(field.width()), 1.0f / float(field.height()), float(field.width()),
                                       float(field.height()));
     mUniforms.tiling = glm::vec4(float(terrain.grid().patchesPerSide()), 0.0f, patch.x, patch.y);
+    for (size_t i = 0; i < detail.averages.size(); ++i) mUniforms.detailAverage[i] = detail.averages[i];
     mUniformBuffer = gpu::Buffer(device, sizeof mUniforms, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
                                  "terrain.uniforms");
     mUniformBuffer.upload(std::span<const shader::TerrainUniforms>(&mUniforms, 1));
@@ -52,6 +58,22 @@ GpuTerrain::GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain) : m
     image.name = "terrain.heightScratch";
     mHeightScratch = gpu::Image(device, image);
     mSampler = gpu::Sampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "terrain.heightSampler");
+
+    // Shadows are soft and filtered bilinearly, so a texel of up to two
+    // height samples is enough and keeps the march's cost bounded.
+    gpu::ImageDesc sun;
+    sun.width = field.width();
+    sun.height = field.height();
+    while (sun.width > 1024 || sun.height > 1024) {
+        sun.width = std::max(1u, sun.width / 2);
+        sun.height = std::max(1u, sun.height / 2);
+    }
+    sun.format = VK_FORMAT_R8_UNORM;
+    sun.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+    sun.name = "terrain.sunVisibility";
+    mSunVisibility = gpu::Image(device, sun);
+    mDetailSampler =
+        gpu::Sampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, "terrain.detailSampler");
 
     const glm::vec2 quad[4] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}, {1.0f, 1.0f}};
     const uint32_t indices[6] = {0, 2, 1, 1, 2, 3};
@@ -76,6 +98,16 @@ GpuTerrain::GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain) : m
         mSlots[s].patchLevels = gpu::Buffer(device, patchCount() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                             gpu::MemoryUsage::GpuOnly, "terrain.patchLevels" + suffix);
     }
+}
+
+bool GpuTerrain::sunVisibilityStale(const glm::vec3& sun) const {
+    // A sun that moved less than ~0.06 degrees casts the same shadows.
+    return !mSunVisibilityValid || glm::dot(sun, mSunVisibilityFor) < 0.9999995f;
+}
+
+void GpuTerrain::markSunVisibility(const glm::vec3& sun) {
+    mSunVisibilityFor = sun;
+    mSunVisibilityValid = true;
 }
 
 gpu::Buffer& GpuTerrain::writeVisiblePatches(uint32_t slot, std::span<const uint32_t> patches) {

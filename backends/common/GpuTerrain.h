@@ -5,6 +5,7 @@
 /// splatted into it), its uniforms, the control mesh's quad, per-frame streams
 /// of visible patch indices and the detail errors the adaptive metric reads.
 
+#include "DetailTextureArray.h"
 #include "tessera/shaders/TerrainUniforms.h"
 #include "tessera/core/Result.h"
 #include "tessera/gpu/Buffer.h"
@@ -24,9 +25,11 @@ class GpuTerrain {
 public:
     /// Fails with a message when the device cannot render into a 16-bit
     /// height map (needed for splats) or sample it linearly.
-    static Result<std::unique_ptr<GpuTerrain>> create(gpu::Device& device, const terrain::Terrain& terrain);
+    /// `detailTextures`: TerrainDesc::detailTextures (empty: flat colours).
+    static Result<std::unique_ptr<GpuTerrain>> create(gpu::Device& device, const terrain::Terrain& terrain,
+                                                      std::span<const Rgba8Image> detailTextures = {});
 
-    GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain);
+    GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain, DetailTextureArray detail);
 
     const terrain::Terrain& source() const { return mSource; }
     uint32_t patchesPerSide() const { return mSource.grid().patchesPerSide(); }
@@ -41,6 +44,21 @@ public:
     /// Same size, R16_UINT; holds the region a splat reads from.
     gpu::Image& heightScratch() { return mHeightScratch; }
     gpu::Sampler& sampler() { return mSampler; }
+    /// The detail albedo array (DetailTextureArray), SHADER_READ_ONLY_OPTIMAL,
+    /// and its trilinear repeating sampler.
+    gpu::Image& detailTextures() { return mDetail; }
+    gpu::Sampler& detailSampler() { return mDetailSampler; }
+    /// R8_UNORM sun-visibility (horizon) map over the same extent as the
+    /// height map, at most 1024 texels a side (TerrainSunPass renders it);
+    /// SHADER_READ_ONLY_OPTIMAL once rendered.
+    gpu::Image& sunVisibility() { return mSunVisibility; }
+    /// Whether the map must be redrawn for `sun`: never drawn yet, the height
+    /// map changed (invalidateSunVisibility), or the sun moved.
+    bool sunVisibilityStale(const glm::vec3& sun) const;
+    /// Records that the map now holds the visibility of `sun`.
+    void markSunVisibility(const glm::vec3& sun);
+    /// Craters changed the height map: redraw the map before the next draw.
+    void invalidateSunVisibility() { mSunVisibilityValid = false; }
     /// One control-mesh quad in patch-local [0,1]^2 (4 vertices, 6 indices),
     /// instanced once per visible patch for the untessellated draw.
     gpu::Buffer& quadVertices() { return mQuadVertices; }
@@ -68,6 +86,11 @@ private:
     gpu::Image mHeightMap;
     gpu::Image mHeightScratch;
     gpu::Sampler mSampler;
+    gpu::Image mSunVisibility;
+    gpu::Image mDetail;
+    gpu::Sampler mDetailSampler;
+    glm::vec3 mSunVisibilityFor{0.0f};
+    bool mSunVisibilityValid = false;
     gpu::Buffer mQuadVertices;
     gpu::Buffer mQuadIndices;
     struct Slot {

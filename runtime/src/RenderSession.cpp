@@ -1,5 +1,7 @@
 #include "tessera/runtime/RenderSession.h"
 
+#include "TerrainDetailTextures.h"
+
 #include "tessera/runtime/World.h"
 #include "tessera/core/Log.h"
 #include "tessera/profiler/CpuScope.h"
@@ -47,6 +49,8 @@ Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& opti
     }
 
     session->mWidth = options.width;
+    session->mLook = options.look;
+    session->mSunDirection = options.sunDirection;
     session->mHeight = options.height;
     gpu::Device* device = session->mSelected->device.get();
     if (device) {
@@ -61,6 +65,12 @@ Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& opti
             std::make_unique<gpu::FrameScheduler>(*device, profiler::Profiler::global(), *session->mTarget);
     }
 
+    // The detail textures are content like the height map: a missing or
+    // broken file ends the run with its name rather than a flat terrain.
+    // Loaded once: every backend of the session uploads the same.
+    auto detail = loadTerrainDetailTextures(options.contentDir);
+    if (!detail) return detail.error();
+    session->mDetailTextures = std::move(detail.value());
     if (Status ok = session->initializeBackend(false); !ok) return ok.error();
     return session;
 }
@@ -80,7 +90,10 @@ Status RenderSession::initializeBackend(bool alreadyInitialized) {
     // The upload copies the CPU height field as it is now, craters included,
     // so the splats still queued (--splat) must not be applied a second time.
     (void)mTerrain->takePendingSplats();
-    auto handle = backend.createTerrain({mTerrain});
+    backend::TerrainDesc desc;
+    desc.terrain = mTerrain;
+    desc.detailTextures = mDetailTextures;
+    auto handle = backend.createTerrain(desc);
     if (!handle) {
         backend.shutdown();
         return handle.error();
@@ -301,6 +314,8 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
         info.shadowCasters = mShadowCasters;
         info.shadowRegion = mShadowRegion;
     }
+    info.look = mLook;
+    info.sunDirection = mSunDirection;
     const bool capture = mRenderDoc && mCaptureFrame == frameIndex;
     if (capture) mRenderDoc->begin(*mSelected->instance);
     {

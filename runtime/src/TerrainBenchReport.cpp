@@ -13,7 +13,7 @@ namespace tessera::runtime {
 namespace {
 
 bool sameRow(const TerrainBenchRecord& a, const TerrainBenchRecord& b) {
-    return a.device == b.device && a.view == b.view && a.mode == b.mode && a.metric == b.metric &&
+    return a.device == b.device && a.look == b.look && a.view == b.view && a.mode == b.mode && a.metric == b.metric &&
            a.targetPixels == b.targetPixels && a.continuousLevel == b.continuousLevel && a.tessMax == b.tessMax &&
            a.width == b.width && a.height == b.height;
 }
@@ -35,6 +35,7 @@ std::string terrainBenchJson(const std::vector<TerrainBenchRecord>& records) {
         json.keyValue("backend", r.backend);
         json.keyValue("mode", r.mode);
         json.keyValue("view", r.view);
+        json.keyValue("look", r.look);
         json.keyValue("width", r.width);
         json.keyValue("height", r.height);
         json.keyValue("triangles", r.triangles);
@@ -96,23 +97,46 @@ std::string terrainBenchJson(const std::vector<TerrainBenchRecord>& records) {
 }
 
 std::string terrainBenchTable(const std::vector<TerrainBenchRecord>& records) {
-    std::string out = format("%-26s %-11s %-6s %-11s %-10s %10s %7s %9s %9s %9s %9s\n", "device", "backend", "view",
-                             "mode", "metric", "triangles", "patches", "min ms", "median ms", "max ms", "cpu ms");
+    std::string out = format("%-26s %-11s %-6s %-5s %-11s %-10s %10s %7s %9s %9s %9s %9s\n", "device", "backend",
+                             "view", "look", "mode", "metric", "triangles", "patches", "min ms", "median ms", "max ms",
+                             "cpu ms");
     for (const auto& r : records)
-        out += format("%-26.26s %-11s %-6s %-11s %-10s %10llu %7u %9.3f %9.3f %9.3f %9.3f\n", r.device.c_str(),
-                      r.backend.c_str(), r.view.c_str(), r.mode.c_str(), r.metric.c_str(),
+        out += format("%-26.26s %-11s %-6s %-5s %-11s %-10s %10llu %7u %9.3f %9.3f %9.3f %9.3f\n", r.device.c_str(),
+                      r.backend.c_str(), r.view.c_str(), r.look.c_str(), r.mode.c_str(), r.metric.c_str(),
                       static_cast<unsigned long long>(r.triangles), r.patches, r.gpuMsMin, r.gpuMsMedian, r.gpuMsMax,
                       r.cpuFrameMsMedian);
     out += "\nRatios to lowres in the same run (GPU median time, triangles):\n";
     for (const auto& base : records) {
         if (base.mode != "lowres" || base.gpuMsMedian <= 0.0 || base.triangles == 0) continue;
         for (const auto& r : records) {
-            if (r.mode == "lowres" || r.device != base.device || r.backend != base.backend || r.view != base.view)
+            if (r.mode == "lowres" || r.device != base.device || r.backend != base.backend || r.view != base.view ||
+                r.look != base.look)
                 continue;
             const std::string what = r.mode == "adaptive" ? "adaptive/" + r.metric : r.mode;
             out += format("  %-26.26s %-11s %-6s %-20s %6.2fx time, %8.1fx triangles\n", r.device.c_str(),
                           r.backend.c_str(), r.view.c_str(), what.c_str(), r.gpuMsMedian / base.gpuMsMedian,
                           double(r.triangles) / double(base.triangles));
+        }
+    }
+    // --look both: what the full look costs over the plain one, row by row
+    // (docs/LOOKS.md: the budget is 25% of the terrain's frame time).
+    bool header = false;
+    for (const auto& full : records) {
+        if (full.look != "full") continue;
+        for (const auto& plain : records) {
+            if (plain.look != "plain" || plain.backend != full.backend || plain.gpuMsMedian <= 0.0) continue;
+            TerrainBenchRecord same = plain;
+            same.look = full.look;
+            if (!sameRow(same, full)) continue;
+            if (!header) out += "\nThe full look's cost over the plain look (GPU median ms, CPU frame median ms):\n";
+            header = true;
+            const std::string what = full.mode == "adaptive" ? "adaptive/" + full.metric : full.mode;
+            out += format("  %-26.26s %-11s %-6s %-20s %8.3f -> %8.3f ms (%+6.1f%%), cpu %8.3f -> %8.3f ms (%+6.1f%%)\n",
+                          full.device.c_str(), full.backend.c_str(), full.view.c_str(), what.c_str(), plain.gpuMsMedian,
+                          full.gpuMsMedian, 100.0 * (full.gpuMsMedian / plain.gpuMsMedian - 1.0),
+                          plain.cpuFrameMsMedian, full.cpuFrameMsMedian,
+                          plain.cpuFrameMsMedian > 0.0 ? 100.0 * (full.cpuFrameMsMedian / plain.cpuFrameMsMedian - 1.0)
+                                                       : 0.0);
         }
     }
     return out;

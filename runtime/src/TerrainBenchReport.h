@@ -24,6 +24,7 @@ struct TerrainBenchRecord {
     std::string backend;
     std::string mode;   ///< lowres | continuous | adaptive
     std::string view;   ///< far | close
+    std::string look = "full"; ///< plain | full (backend::Look)
     std::string device;
     std::string driver;
     uint32_t width = 0;

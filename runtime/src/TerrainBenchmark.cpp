@@ -191,6 +191,9 @@ Status runTerrainBenchmark(const Options& options) {
         if (ec) return fail("--out-dir ", traceDir.string(), ": ", ec.message());
     }
 
+    // --look both: each row twice, plain then full, on the same session.
+    std::vector<backend::Look> looks = {options.look};
+    if (options.benchBothLooks) looks = {backend::Look::Plain, backend::Look::Full};
     std::vector<TerrainBenchRecord> records;
     std::vector<std::string> notes;
     if (compare && options.tessellation.continuousLevel > kComparisonMaxLevel)
@@ -240,28 +243,34 @@ Status runTerrainBenchmark(const Options& options) {
                 for (const Options& row : benchRuns(run, caps)) {
                     auto settings = session.resolveTessellation(row);
                     if (!settings) return settings.error();
-                    const uint32_t first = frameIndex;
-                    const uint64_t rowStartNs = profiler.nowNs();
-                    for (uint32_t f = 0; f < warmup + frames; ++f, ++frameIndex) {
-                        profiler.beginFrame(frameIndex);
-                        session.renderFrame(frameIndex, camera, settings.value(), options.clearColor, false, false);
-                        profiler.endFrame();
-                        profiler.recordCounter({"intermediate bytes", frameIndex, profiler.nowNs(),
-                                                double(session.lastFrameReport().intermediateBytes)});
+                    for (const backend::Look look : looks) {
+                        session.setLook(look);
+                        const uint32_t first = frameIndex;
+                        const uint64_t rowStartNs = profiler.nowNs();
+                        for (uint32_t f = 0; f < warmup + frames; ++f, ++frameIndex) {
+                            profiler.beginFrame(frameIndex);
+                            session.renderFrame(frameIndex, camera, settings.value(), options.clearColor, false, false);
+                            profiler.endFrame();
+                            profiler.recordCounter({"intermediate bytes", frameIndex, profiler.nowNs(),
+                                                    double(session.lastFrameReport().intermediateBytes)});
+                        }
+                        session.finish();
+                        records.push_back(makeRecord(session, view.name, settings.value(),
+                                                     summarizeFrames(profiler, first + warmup, frameIndex)));
+                        TerrainBenchRecord& r = records.back();
+                        r.look = look == backend::Look::Plain ? "plain" : "full";
+                        r.trace = tracePath;
+                        // One slice per row on the CPU track, so the trace reads
+                        // as the table's rows.
+                        const std::string label = std::string(view.name) + " " + r.mode +
+                                                  (r.metric != "-" ? "/" + r.metric : std::string()) +
+                                                  (looks.size() > 1 ? " " + r.look : std::string());
+                        profiler.recordCpu({internBenchName(label), profiler::Profiler::currentThreadId(), first, rowStartNs,
+                                            profiler.nowNs() - rowStartNs, 0});
+                        log::info(r.device + " " + r.backend + " " + r.view + " " + r.mode + " " + r.metric + ": " +
+                                  std::to_string(r.gpuMsMedian) + " ms, " + std::to_string(r.triangles) + " triangles" +
+                                  (looks.size() > 1 ? ", look " + r.look : std::string()));
                     }
-                    session.finish();
-                    records.push_back(makeRecord(session, view.name, settings.value(),
-                                                 summarizeFrames(profiler, first + warmup, frameIndex)));
-                    TerrainBenchRecord& r = records.back();
-                    r.trace = tracePath;
-                    // One slice per row on the CPU track, so the trace reads
-                    // as the table's rows.
-                    const std::string label =
-                        std::string(view.name) + " " + r.mode + (r.metric != "-" ? "/" + r.metric : std::string());
-                    profiler.recordCpu({internBenchName(label), profiler::Profiler::currentThreadId(), first, rowStartNs,
-                                        profiler.nowNs() - rowStartNs, 0});
-                    log::info(r.device + " " + r.backend + " " + r.view + " " + r.mode + " " + r.metric + ": " +
-                              std::to_string(r.gpuMsMedian) + " ms, " + std::to_string(r.triangles) + " triangles");
                 }
             }
             if (!tracePath.empty() && records.size() > firstRecord) {

@@ -6,6 +6,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "character_shading.glsl"
 #include "lod_fade.glsl"
+#include "output_color.glsl"
 
 layout(location = 0) in vec3 inWorld;
 layout(location = 1) in vec3 inNormal;
@@ -27,5 +28,5 @@ void main() {
     color *= gCrowdTint;
 #endif
     if (uCharacter.lod.w > 0.5) color *= tsLodTierTint(uint(uCharacter.lod.z));
-    outColor = vec4(color, 1.0);
+    outColor = tsOutputColor(color);
 }

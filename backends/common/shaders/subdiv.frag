@@ -6,6 +6,7 @@
 #extension GL_GOOGLE_include_directive : require
 #define TS_SUBDIV_FRAGMENT 1
 #include "common_frame.glsl"
+#include "sky_atmosphere.glsl"
 #include "subdiv_eval.glsl"
 #include "subdiv_varyings.glsl"
 
@@ -44,10 +45,16 @@ void main() {
     }
     vec3 sun = normalize(frame.sunDirection.xyz);
     float diffuse = max(dot(n, sun), 0.0);
+    if (tsFullLook()) {
+        // Albedo and debug colours are display (sRGB) values: light them in
+        // linear space so the debug views keep their hues after the output
+        // transform.
+        vec3 lit = tsSrgbToLinear(albedo) * (frame.sunColor.rgb * diffuse + tsSkyAmbient(n));
+        outColor = tsOutputColor(tsApplyFog(lit, ioWorld));
+        return;
+    }
     float hemi = 0.5 + 0.5 * n.y;
     vec3 ambient = mix(vec3(0.20, 0.18, 0.15), vec3(0.38, 0.45, 0.55), hemi);
     vec3 color = albedo * (ambient + vec3(1.0, 0.95, 0.85) * diffuse);
-    float dist = length(ioWorld - frame.cameraPosition.xyz);
-    float fog = 1.0 - exp(-dist * frame.fogColor.a);
-    outColor = vec4(mix(color, frame.fogColor.rgb, clamp(fog, 0.0, 1.0)), 1.0);
+    outColor = tsOutputColor(tsApplyFog(color, ioWorld));
 }

@@ -8,6 +8,7 @@
 #define CHARACTER_SHADING_GLSL
 #include "common_frame.glsl"
 #include "character_common.glsl"
+#include "sky_atmosphere.glsl"
 
 layout(set = 0, binding = TS_BINDING_BASE_COLOR) uniform sampler2D uBaseColor;
 layout(set = 0, binding = TS_BINDING_NORMAL_MAP) uniform sampler2D uNormalMap;
@@ -26,14 +27,20 @@ vec3 tsShadeCharacter(vec3 world, vec3 normal, vec3 tangent, vec2 uv) {
     vec3 albedo = texture(uBaseColor, uv).rgb;
     vec3 sun = normalize(frame.sunDirection.xyz);
     float diffuse = max(dot(n, sun), 0.0);
+    if (tsFullLook()) {
+        // The base colour map holds sRGB-encoded values (glTF's rule); light in
+        // linear space. Decoded here rather than by an _SRGB image format so
+        // the plain look still reads the bytes as it always did.
+        albedo = tsSrgbToLinear(albedo);
+        vec3 lit = albedo * (frame.sunColor.rgb * diffuse + tsSkyAmbient(n));
+        return tsApplyFog(lit, world);
+    }
     // Sky above, bounce from the ground below: characters read as lit from
     // every side without a shadow pass.
     float hemi = 0.5 + 0.5 * n.y;
     vec3 ambient = mix(vec3(0.20, 0.18, 0.15), vec3(0.38, 0.45, 0.55), hemi);
     vec3 color = albedo * (ambient + vec3(1.0, 0.95, 0.85) * diffuse);
-    float dist = length(world - frame.cameraPosition.xyz);
-    float fog = 1.0 - exp(-dist * frame.fogColor.a);
-    return mix(color, frame.fogColor.rgb, clamp(fog, 0.0, 1.0));
+    return tsApplyFog(color, world);
 }
 
 #endif

@@ -1,28 +1,49 @@
 // terrain_shading.glsl: materials from the height field alone (no normal map,
 // no material textures), after the first paper's Listing 18: rock on slopes,
 // grass low and flat, snow on high flat ground with a procedural edge.
+//
+// Two looks (FrameUniforms::look, docs/LOOKS.md). Plain is the shading from
+// before the looks. Full shades in linear light: the same material blend with
+// tileable detail textures (triplanar rock on steep slopes, faded to their
+// averages with distance), the sun masked by the sun-visibility (horizon) map
+// for soft self-shadowing, sky light from the hemisphere, and the
+// aerial-perspective fog.
 #ifndef TERRAIN_SHADING_GLSL
 #define TERRAIN_SHADING_GLSL
 #include "common_frame.glsl"
 #include "common_noise.glsl"
+#include "sky_atmosphere.glsl"
 
-vec3 terrainAlbedo(vec3 worldPos, vec3 normal) {
-    const vec3 grass = vec3(0.23, 0.33, 0.12);
-    const vec3 dirt = vec3(0.36, 0.30, 0.22);
-    const vec3 rock = vec3(0.42, 0.39, 0.36);
-    const vec3 snow = vec3(0.92, 0.94, 0.97);
+// What fraction of the sun each terrain texel sees, made by terrain_sun.frag
+// from the height map; sampled bilinearly, which softens the shadow's edge.
+layout(set = 0, binding = TS_BINDING_SUN_VISIBILITY) uniform sampler2D sunVisibilityMap;
+
+struct TerrainMaterial {
+    vec3 grass, dirt, rock, snow;
+};
+
+vec3 terrainAlbedoFrom(TerrainMaterial m, vec3 worldPos, vec3 normal, float detail) {
     float slope = 1.0 - normal.y;                 // 0 flat .. 1 vertical
-    float detail = valueNoise(worldPos.xz * 0.05) * 0.6 + valueNoise(worldPos.xz * 0.23) * 0.4;
     float heightFraction = worldPos.y / max(terrain.worldSize.z, 1.0);
-    vec3 base = mix(grass, dirt, smoothstep(0.45, 0.8, detail + heightFraction * 0.6));
-    base = mix(base, rock, smoothstep(0.18, 0.32, slope + (detail - 0.5) * 0.08));
+    vec3 base = mix(m.grass, m.dirt, smoothstep(0.45, 0.8, detail + heightFraction * 0.6));
+    base = mix(base, m.rock, smoothstep(0.18, 0.32, slope + (detail - 0.5) * 0.08));
     // Snow settles where it is high and flat enough to stay, with a noisy line.
     float snowLine = 0.62 + (detail - 0.5) * 0.12;
     float snowAmount = smoothstep(snowLine, snowLine + 0.06, heightFraction) * (1.0 - smoothstep(0.25, 0.45, slope));
-    return mix(base, snow, snowAmount);
+    return mix(base, m.snow, snowAmount);
 }
 
-vec3 shadeTerrain(vec3 worldPos, vec3 normal) {
+float terrainDetail(vec3 worldPos) {
+    return valueNoise(worldPos.xz * 0.05) * 0.6 + valueNoise(worldPos.xz * 0.23) * 0.4;
+}
+
+vec3 terrainAlbedo(vec3 worldPos, vec3 normal) {
+    const TerrainMaterial plain = TerrainMaterial(vec3(0.23, 0.33, 0.12), vec3(0.36, 0.30, 0.22),
+                                                  vec3(0.42, 0.39, 0.36), vec3(0.92, 0.94, 0.97));
+    return terrainAlbedoFrom(plain, worldPos, normal, terrainDetail(worldPos));
+}
+
+vec3 shadeTerrainPlain(vec3 worldPos, vec3 normal) {
     vec3 albedo = terrainAlbedo(worldPos, normal);
     vec3 sun = normalize(frame.sunDirection.xyz);
     float diffuse = max(dot(normal, sun), 0.0);
@@ -31,6 +52,88 @@ vec3 shadeTerrain(vec3 worldPos, vec3 normal) {
     float dist = length(worldPos - frame.cameraPosition.xyz);
     float fog = 1.0 - exp(-dist * frame.fogColor.a);
     return mix(color, frame.fogColor.rgb, clamp(fog, 0.0, 1.0));
+}
+
+// The detail albedo textures (tessera-texgen's, an sRGB array: the sampler
+// returns linear values), one layer per material (TS_DETAIL_*).
+layout(set = 0, binding = TS_BINDING_DETAIL) uniform sampler2DArray detailMaps;
+
+// Metres one repeat of a detail texture covers.
+const float kDetailTileMetres = 24.0;
+// The textures fade into their average colours between these distances: past
+// them a texel is smaller than a pixel, mips average it anyway, and skipping
+// the samples keeps distant pixels cheap on lavapipe.
+const float kDetailFadeStart = 250.0;
+const float kDetailFadeEnd = 700.0;
+// A material weighing less than this in a pixel is not sampled.
+const float kDetailMinWeight = 0.02;
+
+vec3 terrainDetailLayer(vec2 uv, int layer) {
+    return texture(detailMaps, vec3(uv, float(layer))).rgb;
+}
+
+// Rock seen triplanar: on a cliff the top-down projection would stretch
+// into streaks, so each of the three projections weighs by how squarely the
+// surface faces its axis (sharpened), and faint ones are skipped.
+vec3 terrainDetailRock(vec3 worldPos, vec3 n) {
+    vec3 w = n * n;
+    w *= w;
+    w /= (w.x + w.y + w.z);
+    vec3 p = worldPos / kDetailTileMetres;
+    vec3 sum = vec3(0.0);
+    float used = 0.0;
+    if (w.y > kDetailMinWeight) { sum += w.y * terrainDetailLayer(p.xz, TS_DETAIL_ROCK); used += w.y; }
+    if (w.x > kDetailMinWeight) { sum += w.x * terrainDetailLayer(p.zy, TS_DETAIL_ROCK); used += w.x; }
+    if (w.z > kDetailMinWeight) { sum += w.z * terrainDetailLayer(p.xy, TS_DETAIL_ROCK); used += w.z; }
+    return sum / max(used, 1e-4);
+}
+
+// The full look's albedo (linear): the plain look's blend of the same four
+// materials by slope, height and noise, each material from its detail
+// texture near the camera and its average colour far away.
+vec3 terrainAlbedoFull(vec3 worldPos, vec3 normal) {
+    float detail = terrainDetail(worldPos);
+    float slope = 1.0 - normal.y;
+    float heightFraction = worldPos.y / max(terrain.worldSize.z, 1.0);
+    float toDirt = smoothstep(0.45, 0.8, detail + heightFraction * 0.6);
+    float toRock = smoothstep(0.18, 0.32, slope + (detail - 0.5) * 0.08);
+    float snowLine = 0.62 + (detail - 0.5) * 0.12;
+    float toSnow = smoothstep(snowLine, snowLine + 0.06, heightFraction) * (1.0 - smoothstep(0.25, 0.45, slope));
+
+    vec3 grass = terrain.detailAverage[TS_DETAIL_GRASS].rgb;
+    vec3 dirt = terrain.detailAverage[TS_DETAIL_DIRT].rgb;
+    vec3 rock = terrain.detailAverage[TS_DETAIL_ROCK].rgb;
+    vec3 snow = terrain.detailAverage[TS_DETAIL_SNOW].rgb;
+    float fade = smoothstep(kDetailFadeStart, kDetailFadeEnd, length(worldPos - frame.cameraPosition.xyz));
+    if (fade < 1.0) {
+        vec2 uv = worldPos.xz / kDetailTileMetres;
+        float ground = (1.0 - toRock) * (1.0 - toSnow);
+        if ((1.0 - toDirt) * ground > kDetailMinWeight)
+            grass = mix(terrainDetailLayer(uv, TS_DETAIL_GRASS), grass, fade);
+        if (toDirt * ground > kDetailMinWeight) dirt = mix(terrainDetailLayer(uv, TS_DETAIL_DIRT), dirt, fade);
+        if (toRock * (1.0 - toSnow) > kDetailMinWeight) rock = mix(terrainDetailRock(worldPos, normal), rock, fade);
+        if (toSnow > kDetailMinWeight) snow = mix(terrainDetailLayer(uv, TS_DETAIL_SNOW), snow, fade);
+    }
+    vec3 albedo = mix(mix(mix(grass, dirt, toDirt), rock, toRock), snow, toSnow);
+    // The blend's own noise also varies the brightness at the kilometre
+    // scale, where the textures have faded: no extra noise evaluations.
+    return albedo * (0.8 + 0.4 * detail);
+}
+
+float terrainSunVisibility(vec3 worldPos) {
+    return texture(sunVisibilityMap, terrainTexcoord(worldPos.xz)).r;
+}
+
+vec3 shadeTerrainFull(vec3 worldPos, vec3 normal) {
+    vec3 albedo = terrainAlbedoFull(worldPos, normal);
+    vec3 sun = tsSunDirection();
+    float diffuse = max(dot(normal, sun), 0.0) * terrainSunVisibility(worldPos);
+    vec3 color = albedo * (frame.sunColor.rgb * diffuse + tsSkyAmbient(normal));
+    return tsApplyFog(color, worldPos);
+}
+
+vec3 shadeTerrain(vec3 worldPos, vec3 normal) {
+    return tsFullLook() ? shadeTerrainFull(worldPos, normal) : shadeTerrainPlain(worldPos, normal);
 }
 
 #endif

@@ -41,8 +41,10 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkAcces
 VkImageMemoryBarrier2 imageBarrier(const Image& image, VkImageLayout from, VkImageLayout to,
                                    VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
                                    VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess, uint32_t mipLevels) {
-    return layoutTransition(image.handle(), image.aspect(), from, to, srcStage, srcAccess, dstStage, dstAccess,
-                            mipLevels);
+    VkImageMemoryBarrier2 barrier = layoutTransition(image.handle(), image.aspect(), from, to, srcStage, srcAccess,
+                                                     dstStage, dstAccess, mipLevels);
+    barrier.subresourceRange.layerCount = image.arrayLayers();
+    return barrier;
 }
 
 VkBufferMemoryBarrier2 bufferBarrier(const Buffer& buffer, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,

@@ -1,5 +1,6 @@
 #include "tessera/gpu/Image.h"
 
+#include "tessera/gpu/Barriers.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/Device.h"
 #include "tessera/gpu/VulkanCheck.h"
@@ -23,7 +24,7 @@ Image::Image(Device& device, const ImageDesc& desc) : mDevice(&device), mDesc(de
     info.format = desc.format;
     info.extent = {desc.width, desc.height, 1};
     info.mipLevels = desc.mipLevels;
-    info.arrayLayers = 1;
+    info.arrayLayers = desc.arrayLayers;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = desc.usage;
@@ -41,9 +42,9 @@ Image::Image(Device& device, const ImageDesc& desc) : mDevice(&device), mDesc(de
 
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     view.image = mImage;
-    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.viewType = desc.arrayLayers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
     view.format = desc.format;
-    view.subresourceRange = {aspect(), 0, desc.mipLevels, 0, 1};
+    view.subresourceRange = {aspect(), 0, desc.mipLevels, 0, desc.arrayLayers};
     TESSERA_VK_CHECK(vkCreateImageView(device.handle(), &view, nullptr, &mView));
     device.setName(VK_OBJECT_TYPE_IMAGE_VIEW, mView, desc.name + ".view");
     if (desc.aliasFormat != VK_FORMAT_UNDEFINED) {
@@ -119,6 +120,29 @@ void Image::upload(std::span<const std::byte> texels, VkImageLayout finalLayout)
                             VK_ACCESS_2_MEMORY_READ_BIT, mDesc.mipLevels);
         },
         "upload.image");
+}
+
+void Image::upload(std::span<const std::byte> texels, std::span<const VkBufferImageCopy> regions,
+                   VkImageLayout finalLayout) {
+    Buffer staging(*mDevice, texels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::CpuToGpu,
+                   mDesc.name + ".staging");
+    std::memcpy(staging.mapped(), texels.data(), texels.size());
+    mDevice->submitImmediate(
+        [&](VkCommandBuffer cmd) {
+            // imageBarrier covers every mip given and every layer of the image.
+            const VkImageMemoryBarrier2 toCopy[] = {imageBarrier(
+                *this, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_NONE,
+                VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, mDesc.mipLevels)};
+            pipelineBarrier(cmd, toCopy);
+            vkCmdCopyBufferToImage(cmd, staging.handle(), mImage, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                   static_cast<uint32_t>(regions.size()), regions.data());
+            const VkImageMemoryBarrier2 toFinal[] = {
+                imageBarrier(*this, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, finalLayout, VK_PIPELINE_STAGE_2_COPY_BIT,
+                             VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                             VK_ACCESS_2_MEMORY_READ_BIT, mDesc.mipLevels)};
+            pipelineBarrier(cmd, toFinal);
+        },
+        "upload.imageRegions");
 }
 
 } // namespace tessera::gpu

@@ -12,6 +12,14 @@ class FrameContext; // the shared Vulkan layer's frame; opaque to the data model
 
 namespace tessera::backend {
 
+/// How the frame is shaded (docs/LOOKS.md). Plain is the shading from before
+/// the looks (no sky, tone mapping or terrain shadows), kept so one run can
+/// measure what the full look costs.
+enum class Look : uint32_t {
+    Plain = 0, ///< clear-colour background, distance fog, unencoded colour
+    Full = 1,  ///< analytic sky, aerial-perspective fog, sun shadows, filmic tone mapping, sRGB encode
+};
+
 struct FrameInfo {
     uint64_t frameIndex = 0;
     double timeSeconds = 0.0;
@@ -24,6 +32,7 @@ struct FrameInfo {
     uint32_t width = 0;
     uint32_t height = 0;
     bool wireframe = false;
+    Look look = Look::Full;
     /// Characters' shadows on the terrain: the feet (xyz) and height (w) in
     /// metres of each character standing in `shadowRegion`, the square of
     /// ground the backend's shadow mask covers (x, y: its min corner in

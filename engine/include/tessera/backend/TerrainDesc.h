@@ -2,6 +2,7 @@
 /// @file TerrainDesc.h
 /// The terrain the host asks a backend to upload, and how to draw it.
 
+#include "tessera/core/ImageFile.h"
 #include "tessera/terrain/CraterSplat.h"
 #include "tessera/terrain/TessellationSettings.h"
 
@@ -24,6 +25,11 @@ using terrain::TerrainMode;
 /// the host drops them (Terrain::takePendingSplats) instead of sending them.
 struct TerrainDesc {
     const terrain::Terrain* terrain = nullptr;
+    /// The full look's detail albedo textures (docs/LOOKS.md), sRGB RGBA8, in
+    /// layer order grass, dirt, rock, snow (TS_DETAIL_*): four square images
+    /// of one power-of-two size, which tile. Read during createTerrain only.
+    /// Empty: the backend shades with each material's flat average colour.
+    std::span<const Rgba8Image> detailTextures;
 };
 
 struct TerrainDrawInfo {

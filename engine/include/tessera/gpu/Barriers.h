@@ -27,7 +27,7 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkAcces
                    VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess);
 
 /// A layout transition of `image` (its aspect, the first `mipLevels` levels,
-/// one layer, no queue-family transfer) to record with pipelineBarrier().
+/// every array layer, no queue-family transfer) to record with pipelineBarrier().
 VkImageMemoryBarrier2 imageBarrier(const Image& image, VkImageLayout from, VkImageLayout to,
                                    VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
                                    VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess,

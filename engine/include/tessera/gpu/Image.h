@@ -19,6 +19,8 @@ struct ImageDesc {
     VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
     VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT;
     uint32_t mipLevels = 1;
+    /// More than one: a 2D array image with a 2D_ARRAY view over every layer.
+    uint32_t arrayLayers = 1;
     /// When set, a second view in this size-compatible format (the image is
     /// created MUTABLE_FORMAT), e.g. R16_UINT over R16_UNORM to read and
     /// write exact bits where the UNORM conversion's rounding is not defined
@@ -44,12 +46,19 @@ public:
     VkFormat format() const { return mDesc.format; }
     uint32_t width() const { return mDesc.width; }
     uint32_t height() const { return mDesc.height; }
+    uint32_t mipLevels() const { return mDesc.mipLevels; }
+    uint32_t arrayLayers() const { return mDesc.arrayLayers; }
     VkImageAspectFlags aspect() const;
     bool valid() const { return mImage != VK_NULL_HANDLE; }
 
     /// Uploads mip 0 from tightly packed texels and leaves the image in
     /// `finalLayout`. Blocking; load time only.
     void upload(std::span<const std::byte> texels, VkImageLayout finalLayout);
+    /// Uploads `texels` into the subresources `regions` name (offsets into
+    /// `texels`; mips and layers of an array, e.g.) and leaves every mip and
+    /// layer in `finalLayout`. Blocking; load time only.
+    void upload(std::span<const std::byte> texels, std::span<const VkBufferImageCopy> regions,
+                VkImageLayout finalLayout);
 
     void reset();
     void deferredReset();

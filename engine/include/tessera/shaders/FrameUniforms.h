@@ -10,13 +10,19 @@ struct FrameUniforms {
     mat4 view;
     vec4 cameraPosition; // xyz: world position, w: time in seconds
     vec4 sunDirection;   // xyz: unit vector towards the sun, w: unused
-    vec4 fogColor;       // rgb: horizon colour (the clear colour), a: fog density per metre
+    vec4 fogColor;       // rgb: plain look's fog colour (the clear colour), a: its fog density per metre
     vec4 viewport;       // x: width, y: height, z: 1/width, w: 1/height (pixels)
+    vec4 look;           // x: TS_LOOK_*, y: exposure, z: fog height falloff (1/m), w: fog density at the camera (1/m)
+    vec4 sunColor;       // rgb: sun radiance above the atmosphere (linear), a: cosine of the sun disc's radius
 };
-TS_CHECK_SIZE(FrameUniforms, 192)
+TS_CHECK_SIZE(FrameUniforms, 224)
 
 TS_NAMESPACE_END
 
 #define TS_BINDING_FRAME 0
+
+// FrameUniforms::look.x, the same numbers as backend::Look.
+#define TS_LOOK_PLAIN 0u
+#define TS_LOOK_FULL 1u
 
 #endif

@@ -7,6 +7,7 @@
 /// names its flag, documented in `tessera-demo --help`).
 
 #include "tessera/backend/CharacterDesc.h"
+#include "tessera/backend/FrameInfo.h"
 #include "tessera/core/Result.h"
 #include "tessera/scene/CameraPose.h"
 #include "tessera/terrain/CraterSplat.h"
@@ -55,6 +56,11 @@ struct Options {
     /// the frames (screenshots, and its GPU cost in --benchmark).
     std::optional<bool> overlay;
     bool wireframe = false;
+    /// --look plain|full: today's shading or the full look (sky, fog, shadows,
+    /// tone mapping; docs/LOOKS.md). The terrain benchmark measures both.
+    backend::Look look = backend::Look::Full;
+    glm::vec3 sunDirection{0.4f, 0.8f, 0.3f}; ///< --sun: towards the sun (normalised by the backend)
+    bool benchBothLooks = false;        ///< --look both: --bench terrain measures every row in both looks
     uint32_t width = 1280;
     uint32_t height = 720;
     bool sizeGiven = false;             ///< --width or --height was given (--bench crowd defaults to 1920x1080)

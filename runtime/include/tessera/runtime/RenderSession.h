@@ -12,6 +12,7 @@
 #include "tessera/gpu/RenderDoc.h"
 #include "tessera/gpu/RenderTarget.h"
 #include "tessera/gpu/Swapchain.h"
+#include "tessera/core/ImageFile.h"
 #include "tessera/scene/Camera.h"
 #include "tessera/terrain/Terrain.h"
 
@@ -73,6 +74,10 @@ public:
     /// Whether frames draw the terrain (--no-terrain leaves characters alone
     /// on the clear colour; craters still land on the height map).
     void setTerrainVisible(bool visible) { mTerrainVisible = visible; }
+    /// How the next frames are shaded (Options::look at creation); the
+    /// terrain benchmark switches it to measure both looks in one run.
+    void setLook(backend::Look look) { mLook = look; }
+    backend::Look look() const { return mLook; }
 
     /// Replaces the backend with backend `name` on the same device, window
     /// and target, without restarting: every GPU object of the old backend is
@@ -162,11 +167,14 @@ private:
     backend::CrowdHandle mCrowd;
     std::vector<backend::SubdivHandle> mSubdivs;
     bool mTerrainVisible = true;
+    backend::Look mLook = backend::Look::Full;
+    glm::vec3 mSunDirection{0.4f, 0.8f, 0.3f};
     uint32_t mWidth = 0;
     uint32_t mHeight = 0;
     std::vector<uint32_t> mVisible;
     std::function<void(gpu::FrameContext&)> mOverlay;
     uint32_t mFrameIndex = 0;
+    std::vector<Rgba8Image> mDetailTextures; ///< the terrain's, uploaded by each backend
     std::span<const glm::vec4> mShadowCasters;
     glm::vec3 mShadowRegion{0.0f};
     uint64_t mGeneration = 0;

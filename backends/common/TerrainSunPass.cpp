@@ -1,0 +1,99 @@
+#include "TerrainSunPass.h"
+
+#include "tessera/shaders/TerrainUniforms.h"
+
+#include "fullscreen.vert.spv.h"
+#include "terrain_sun.frag.spv.h"
+
+#include <cmath>
+
+namespace tessera::backends {
+
+namespace {
+// The march: 40 steps from one height sample out to ~3 km, each 18% longer
+// than the last (near steps find the small crests, far ones the mountains).
+constexpr float kSteps = 40.0f;
+constexpr float kGrowth = 1.18f;
+// Half the angular width of the shadow's soft edge: wider than the real sun
+// (0.27 degrees) so the map's texels do not show as stairs.
+constexpr float kPenumbraRadians = 0.035f;
+} // namespace
+
+TerrainSunPass::TerrainSunPass(gpu::Device& device, const std::string& backendName) : mDevice(&device) {
+    const VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+    mLayout = gpu::PipelineLayout(device,
+                                  {{TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment},
+                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment}},
+                                  sizeof(shader::TerrainSunParams), fragment, backendName + ".terrainSun.layout");
+    gpu::GraphicsPipelineDesc desc;
+    desc.name = backendName + ".terrainSun";
+    desc.layout = &mLayout;
+    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, fullscreen_vert_spv}, {VK_SHADER_STAGE_FRAGMENT_BIT, terrain_sun_frag_spv}};
+    desc.cullMode = VK_CULL_MODE_NONE;
+    desc.depthTest = false;
+    desc.depthWrite = false;
+    desc.colorFormats = {VK_FORMAT_R8_UNORM};
+    mPipeline = gpu::Pipeline(device, desc);
+}
+
+void TerrainSunPass::update(gpu::FrameContext& frame, GpuTerrain& terrain, const glm::vec3& sunDirection) {
+    if (!terrain.sunVisibilityStale(sunDirection)) return;
+    gpu::PassScope pass(frame, "terrain.sun");
+    VkCommandBuffer cmd = frame.cmd();
+    gpu::Image& map = terrain.sunVisibility();
+    const VkImageAspectFlags color = VK_IMAGE_ASPECT_COLOR_BIT;
+    // Every texel is rewritten, so the old contents go (UNDEFINED); earlier
+    // terrain draws may still be sampling it, hence the fragment stage.
+    gpu::transitionImage(cmd, map.handle(), color, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                         VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                         VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+
+    VkRenderingAttachmentInfo attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    attachment.imageView = map.view();
+    attachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    attachment.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = {{0, 0}, {map.width(), map.height()}};
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &attachment;
+    vkCmdBeginRendering(cmd, &rendering);
+    const VkViewport viewport{0.0f, 0.0f, float(map.width()), float(map.height()), 0.0f, 1.0f};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &rendering.renderArea);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
+
+    VkDescriptorBufferInfo terrainInfo{terrain.uniformBuffer().handle(), 0, VK_WHOLE_SIZE};
+    VkDescriptorImageInfo heightInfo{terrain.sampler().handle(), terrain.heightMap().view(),
+                                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkWriteDescriptorSet writes[2]{{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}, {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}};
+    writes[0].dstBinding = TS_BINDING_TERRAIN;
+    writes[0].descriptorCount = 1;
+    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    writes[0].pBufferInfo = &terrainInfo;
+    writes[1].dstBinding = TS_BINDING_HEIGHTMAP;
+    writes[1].descriptorCount = 1;
+    writes[1].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writes[1].pImageInfo = &heightInfo;
+    mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0, 2, writes);
+
+    shader::TerrainSunParams params{};
+    const float spacing = terrain.uniforms().worldSize.w;
+    params.sun = glm::vec4(sunDirection, kPenumbraRadians);
+    // Half a metre of bias keeps a texel from shadowing itself through the
+    // bilinear height between samples.
+    params.march = glm::vec4(kSteps, spacing, kGrowth, 0.5f);
+    params.map = glm::vec4(1.0f / float(map.width()), 1.0f / float(map.height()), 0.0f, 0.0f);
+    vkCmdPushConstants(cmd, mLayout.handle(), VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof params, &params);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRendering(cmd);
+
+    gpu::transitionImage(cmd, map.handle(), color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                         VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                         VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    terrain.markSunVisibility(sunDirection);
+}
+
+} // namespace tessera::backends
