@@ -46,7 +46,8 @@ Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
                                    {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
                                    {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
                                    {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
-                                   {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages}},
+                                   {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
+                                   {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages}},
                                   0, 0, caps.name + ".terrainLowres.layout");
 
     gpu::GraphicsPipelineDesc desc;
@@ -69,6 +70,7 @@ Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
     }
     mSplatPass = TerrainSplatPass(*mDevice, caps.name);
     mSunPass = TerrainSunPass(*mDevice, caps.name);
+    mShadowPass = CharacterShadowPass(*mDevice, caps.name);
     mSkyPass = SkyPass(*mDevice, caps.name, static_cast<VkFormat>(info.colorFormat),
                        static_cast<VkFormat>(info.depthFormat));
     return initializeTechnique(info);
@@ -80,6 +82,7 @@ void BasicTerrainBackend::shutdown() {
     shutdownTechnique();
     mSplatPass = {};
     mSunPass = {};
+    mShadowPass = {};
     mSkyPass = {};
     mFillPipeline = {};
     mWirePipeline = {};
@@ -154,6 +157,9 @@ void BasicTerrainBackend::drawTerrain(backend::TerrainHandle handle, const backe
     // current in the plain look too, since every terrain layout binds it.
     suspendMainPass();
     mSunPass.update(*mFrame, *terrain, glm::normalize(mFrameInfo.sunDirection));
+    // The characters' shadows on it, from where they stand this frame.
+    if (mFrameInfo.look == backend::Look::Full)
+        mShadowPass.record(*mFrame, mFrameInfo.shadowCasters, mFrameInfo.shadowRegion, mFrameInfo.sunDirection);
     const auto mode = draw.tessellation.mode;
     if (mode == backend::TerrainMode::LowRes || !capabilities(nullptr).drawsTerrainMode(mode)) {
         drawControlMesh(*terrain, draw.visiblePatches, "terrain.lowres");
@@ -174,7 +180,8 @@ void BasicTerrainBackend::pushTerrainDescriptors(VkPipelineBindPoint bindPoint, 
                                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkDescriptorImageInfo detailInfo{terrain.detailSampler().handle(), terrain.detailTextures().view(),
                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    std::vector<VkWriteDescriptorSet> writes(5);
+    const VkDescriptorImageInfo shadowInfo = mShadowPass.descriptor();
+    std::vector<VkWriteDescriptorSet> writes(6);
     for (auto& w : writes) {
         w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         w.descriptorCount = 1;
@@ -194,6 +201,9 @@ void BasicTerrainBackend::pushTerrainDescriptors(VkPipelineBindPoint bindPoint, 
     writes[4].dstBinding = TS_BINDING_DETAIL;
     writes[4].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     writes[4].pImageInfo = &detailInfo;
+    writes[5].dstBinding = TS_BINDING_CHARACTER_SHADOW;
+    writes[5].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writes[5].pImageInfo = &shadowInfo;
     writes.insert(writes.end(), extra.begin(), extra.end());
     mDevice->fn().cmdPushDescriptorSet(mFrame->cmd(), bindPoint, layout.handle(), 0, static_cast<uint32_t>(writes.size()),
                                        writes.data());

@@ -10,6 +10,7 @@
 /// draw, so a backend can run its own off-target passes (R2VB render targets,
 /// stream-out, compute) before it.
 
+#include "CharacterShadowPass.h"
 #include "GpuTerrain.h"
 #include "SkyPass.h"
 #include "TerrainSplatPass.h"
@@ -56,9 +57,10 @@ protected:
     void suspendMainPass();
     /// Draws the visible patches of `terrain` as the untessellated control mesh.
     void drawControlMesh(GpuTerrain& terrain, std::span<const uint32_t> patches, const char* passName);
-    /// Pushes the frame, terrain, height-map, sun-visibility and detail
-    /// bindings (set 0: 0..2, TS_BINDING_SUN_VISIBILITY, TS_BINDING_DETAIL)
-    /// plus `extra` writes for `layout`, which must declare all five.
+    /// Pushes the frame, terrain, height-map, sun-visibility, detail and
+    /// character-shadow bindings (set 0: 0..2, TS_BINDING_SUN_VISIBILITY,
+    /// TS_BINDING_DETAIL, TS_BINDING_CHARACTER_SHADOW) plus `extra` writes
+    /// for `layout`, which must declare all six.
     void pushTerrainDescriptors(VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout, GpuTerrain& terrain,
                                 std::span<const VkWriteDescriptorSet> extra = {});
     /// Pixels one metre covers seen face-on from one metre away (the metrics' scale).
@@ -84,6 +86,7 @@ private:
     gpu::Pipeline mWirePipeline;
     TerrainSplatPass mSplatPass;
     TerrainSunPass mSunPass;
+    CharacterShadowPass mShadowPass;
     SkyPass mSkyPass;
     std::vector<std::unique_ptr<GpuTerrain>> mTerrains;
     bool mMainPassOpen = false;

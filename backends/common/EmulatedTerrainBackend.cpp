@@ -36,6 +36,7 @@ Status EmulatedTerrainBackend::initializeTechnique(const backend::BackendInitInf
                                    {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
                                    {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
                                    {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
+                                   {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
                                    {TS_BINDING_EMU_RECORDS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER,
                                     VK_SHADER_STAGE_VERTEX_BIT}},
                                   sizeof(uint32_t), VK_SHADER_STAGE_VERTEX_BIT, name + ".terrainEmulated.layout");

@@ -26,6 +26,11 @@ shader::FrameUniforms buildFrameUniforms(const backend::FrameInfo& frame) {
     const float h = static_cast<float>(frame.height ? frame.height : 1);
     u.viewport = glm::vec4(w, h, 1.0f / w, 1.0f / h);
     u.sunColor = glm::vec4(kSunRadiance, std::cos(kSunDiscRadians * 0.5f));
+    // The characters' shadows: only where the host gave casters (and then the
+    // backend draws the mask before the terrain).
+    const bool shadows = !frame.shadowCasters.empty() && frame.shadowRegion.z > 0.0f;
+    u.characterShadow = shadows ? glm::vec4(frame.shadowRegion.x, frame.shadowRegion.y, 1.0f / frame.shadowRegion.z, 1.0f)
+                                : glm::vec4(0.0f);
     if (frame.look == backend::Look::Full) {
         // The fog's colour is the sky's (sky_atmosphere.glsl). Its density
         // falls off with height; the shaders integrate it from the camera's.

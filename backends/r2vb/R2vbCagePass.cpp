@@ -18,6 +18,7 @@ R2vbCagePass::R2vbCagePass(gpu::Device& device) {
                                    {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
                                    {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
                                    {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
+                                   {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
                                    {TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex}},
                                   sizeof(shader::R2vbTargetConstants), vertex, "r2vb.cage.layout");
     gpu::GraphicsPipelineDesc desc = r2vb::pointPipeline("r2vb.cage", mLayout, r2vb_cage_vert_spv, r2vb_cage_frag_spv,

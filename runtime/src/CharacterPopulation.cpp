@@ -8,6 +8,12 @@ namespace tessera::runtime {
 
 void CharacterPopulation::shadowCasters(const glm::vec3& region, uint32_t limit, std::vector<glm::vec4>& out) {
     out.clear();
+    // Drawn as an instanced crowd: its instances are the characters.
+    if (InstancedCrowd* crowd = instancedCrowd(); crowd && items().empty()) {
+        crowd->shadowCasters(assets(), region, out);
+        keepNearest(region, limit, out);
+        return;
+    }
     const CharacterAssets& all = assets();
     for (const backend::CharacterDrawItem& item : items()) {
         if (item.fadingOut) continue; // the same character's other tier casts it

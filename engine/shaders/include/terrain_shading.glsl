@@ -11,6 +11,7 @@
 #ifndef TERRAIN_SHADING_GLSL
 #define TERRAIN_SHADING_GLSL
 #include "common_frame.glsl"
+#include "tessera/shaders/CharacterShadow.h"
 #include "common_noise.glsl"
 #include "sky_atmosphere.glsl"
 
@@ -120,8 +121,22 @@ vec3 terrainAlbedoFull(vec3 worldPos, vec3 normal) {
     return albedo * (0.8 + 0.4 * detail);
 }
 
+layout(set = 0, binding = TS_BINDING_CHARACTER_SHADOW) uniform sampler2D characterShadowMask;
+
+// Sunlight the characters leave on the ground (CharacterShadow.h): the mask
+// covers a square ahead of the camera; its last 10% fades out so the edge of
+// the square never shows as a line.
+float terrainCharacterLight(vec3 worldPos) {
+    if (frame.characterShadow.w < 0.5) return 1.0;
+    vec2 uv = (worldPos.xz - frame.characterShadow.xy) * frame.characterShadow.z;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    vec2 edge = min(uv, 1.0 - uv);
+    float fade = smoothstep(0.0, 0.1, min(edge.x, edge.y));
+    return 1.0 - TS_CHARACTER_SHADOW_STRENGTH * fade * texture(characterShadowMask, uv).r;
+}
+
 float terrainSunVisibility(vec3 worldPos) {
-    return texture(sunVisibilityMap, terrainTexcoord(worldPos.xz)).r;
+    return texture(sunVisibilityMap, terrainTexcoord(worldPos.xz)).r * terrainCharacterLight(worldPos);
 }
 
 vec3 shadeTerrainFull(vec3 worldPos, vec3 normal) {

@@ -16,8 +16,6 @@ TS_CHECK_SIZE(CharacterShadowParams, 32)
 
 TS_NAMESPACE_END
 
-// The mask's binding in the terrain's descriptor set (after the sun visibility and detail textures).
-#define TS_BINDING_CHARACTER_SHADOW 26
 // Texels on a side of the mask (R8: darkness).
 #define TS_CHARACTER_SHADOW_SIZE 1024u
 // Darkness at the centre of a character's shadow (sunlight kept: 1 - this).

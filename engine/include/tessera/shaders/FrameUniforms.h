@@ -14,8 +14,9 @@ struct FrameUniforms {
     vec4 viewport;       // x: width, y: height, z: 1/width, w: 1/height (pixels)
     vec4 look;           // x: TS_LOOK_*, y: exposure, z: fog height falloff (1/m), w: fog density at the camera (1/m)
     vec4 sunColor;       // rgb: sun radiance above the atmosphere (linear), a: cosine of the sun disc's radius
+    vec4 characterShadow; // the characters' shadow mask: xy: world XZ of its min corner, z: 1/side (1/m), w: 1 when drawn this frame
 };
-TS_CHECK_SIZE(FrameUniforms, 224)
+TS_CHECK_SIZE(FrameUniforms, 240)
 
 TS_NAMESPACE_END
 

@@ -38,6 +38,9 @@ TS_NAMESPACE_END
 #define TS_DETAIL_DIRT 1
 #define TS_DETAIL_ROCK 2
 #define TS_DETAIL_SNOW 3
+// The characters' shadow mask (CharacterShadow.h), R8 darkness over the
+// square of ground FrameUniforms::characterShadow places.
+#define TS_BINDING_CHARACTER_SHADOW 26
 #define TS_DETAIL_LAYERS 4
 
 #endif

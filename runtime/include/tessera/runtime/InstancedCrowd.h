@@ -51,6 +51,10 @@ public:
     /// (--crowd-tiers); an error naming the file when it cannot.
     Status writeTiers(const std::string& path, const std::string& backend, const backend::CrowdTiers& gpu) const;
     size_t instanceCount() const { return mInstances.size(); }
+    /// This frame's instances standing in `region` (x, y: min corner XZ, z:
+    /// side) as shadow casters: feet (xyz) and height (w, from the asset's
+    /// box and the instance's scale), metres (CharacterPopulation::shadowCasters).
+    void shadowCasters(const CharacterAssets& assets, const glm::vec3& region, std::vector<glm::vec4>& out) const;
 
 private:
     InstancedCrowd() = default;
