@@ -7,6 +7,13 @@
 
 namespace tessera::creature {
 
+namespace {
+
+// Width of a gear band's bevelled sides (metres).
+constexpr float kBandBevel = 0.003f;
+
+} // namespace
+
 CreatureSdf::CreatureSdf(const CreatureParams& c) {
     const float t = c.limbThickness;
     const glm::vec3 hips = c.at(Joint::Hips), spine = c.at(Joint::Spine), chest = c.at(Joint::Chest);
@@ -144,10 +151,13 @@ float CreatureSdf::distanceBefore(const glm::vec3& p, size_t count, bool coarse)
         const SdfPrimitive& prim = mPrims[i];
         if (coarse && prim.detail) continue;
         if (prim.kind == SdfPrimitive::Kind::Band) {
-            // The surface grown by the thickness, inside the strip only;
-            // the strip's sides make the leather's square edges.
+            // The surface grown by the thickness inside the strip, ramping
+            // up over kBandBevel from its sides: a square step would be
+            // steeper than the sculpt can follow (its triangles fold there
+            // and the baked normals turn to noise).
             const GearBand& band = mLayout.bands[prim.band];
-            d = std::min(d, std::max(d - band.thickness, bandRegion(band, p)));
+            float ramp = std::clamp(-bandRegion(band, p) / kBandBevel, 0.0f, 1.0f);
+            d -= band.thickness * ramp * ramp * (3.0f - 2.0f * ramp);
             continue;
         }
         float toBound = prim.boundRadius >= 0.0f ? glm::length(p - prim.boundCentre) - prim.boundRadius : -1e9f;

@@ -130,12 +130,14 @@ void CreatureSdf::addBand(const GearBand& band) {
 
 void CreatureSdf::addTorsoGear(const CreatureParams& c) {
     const glm::vec3 hips = c.at(Joint::Hips), spine = c.at(Joint::Spine), chest = c.at(Joint::Chest);
-    // The belt: tilted down at the front so it rides under the pot belly.
-    // Its bound is narrower than the hanging arms are far apart.
+    // The belt: across the lower slope of the pot belly, tipped down a
+    // little at the front, where the buckle shows from the front and from
+    // above (lower down, the belly hides it). Its bound is narrower than
+    // the hanging arms are far apart.
     GearBand belt;
     belt.kind = GearBand::Kind::Belt;
-    belt.centre = hips + glm::vec3(0.0f, 0.05f, 0.0f);
-    belt.axis = glm::normalize(glm::vec3(0.0f, 1.0f, 0.25f));
+    belt.centre = hips + glm::vec3(0.0f, 0.08f, 0.0f);
+    belt.axis = glm::normalize(glm::vec3(0.0f, 1.0f, 0.08f));
     belt.halfWidth = 0.021f;
     belt.thickness = 0.007f;
     belt.bound = {belt.centre + glm::vec3(0.0f, 0.0f, -0.3f), belt.centre + glm::vec3(0.0f, 0.0f, 0.4f), 0.235f, 0.235f};
@@ -158,7 +160,9 @@ void CreatureSdf::addTorsoGear(const CreatureParams& c) {
     strap.axis = glm::normalize(glm::cross(along, torsoForward));
     strap.halfWidth = 0.017f;
     strap.thickness = 0.005f;
-    strap.bound = {spine - up * 0.2f, chest + up * 0.1f, 0.25f, 0.25f};
+    // The bound's lower cap ends at the belt on the right hip, so the strap
+    // runs into the belt instead of wrapping under the pelvis.
+    strap.bound = {hips + glm::vec3(0.0f, 0.3f, 0.1f), chest + glm::vec3(0.0f, 0.1f, 0.0f), 0.3f, 0.3f};
     addBand(strap);
 }
 

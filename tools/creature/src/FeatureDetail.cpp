@@ -128,15 +128,15 @@ void FeatureDetail::leather(const GearBand& band, const glm::vec3& p, float insi
     out.surface = Surface::Leather;
     out.skinMask = 0.0f;
     // Rounded, slightly worn edges.
-    float relief = -0.0009f * (1.0f - smoothstep(0.0f, 0.0025f, inside));
+    float relief = -0.0006f * (1.0f - smoothstep(0.0f, 0.002f, inside));
     // Grain: fine pores and a few longer creases.
     float grain = noise::fbm(p * 420.0f, mSeed + 3u, 2);
     float crease = noise::ridged(p * glm::vec3(90.0f, 160.0f, 90.0f), mSeed + 5u);
     relief += 0.00018f * grain - 0.00035f * crease * crease;
     out.shade = std::clamp(0.5f + 0.5f * grain - 0.3f * crease, 0.0f, 1.0f);
-    // Saddle stitching: a sunk row 3.5 mm in from each edge, with a raised
+    // Saddle stitching: a sunk row 4.5 mm in from each edge (just past the bevel), with a raised
     // thread every 6 mm (4 mm of thread, 2 mm of hole).
-    float row = std::abs(inside - 0.0035f);
+    float row = std::abs(inside - 0.0045f);
     if (row < 0.0009f) {
         float radius = band.kind == GearBand::Kind::Bracer ? 0.045f : 0.16f;
         float phase = aroundBand(band, p, radius) / 0.006f;

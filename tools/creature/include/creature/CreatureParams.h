@@ -57,8 +57,8 @@ struct CreatureParams {
     uint32_t toothCount = 5;    ///< pointed upper teeth along the lip line
     float tuskLength = 0.02f;   ///< the two lower tusks, from the lower lip up
     float leatherHue = 0.5f;    ///< 0..1, the gear's leather from tan to dark oxblood
-    bool chestStrap = true;     ///< a leather strap from the left shoulder to the right hip
-    bool bracers = true;        ///< leather bracers on both forearms
+    bool chestStrap = true;     ///< a leather strap from the left shoulder to the right hip (seeds 1, 2 mod 4)
+    bool bracers = true;        ///< leather bracers on both forearms (seeds 1, 3 mod 4)
     /// Bind-pose positions of the joints, indexed by Joint.
     std::array<glm::vec3, kJointCount> joints{};
     /// Ends of the bones that have no child joint (head top, ear tips,
