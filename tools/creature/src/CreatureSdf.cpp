@@ -149,7 +149,7 @@ float CreatureSdf::distanceBefore(const glm::vec3& p, size_t count, bool coarse)
     float d = primitiveDistance(mPrims[0], p);
     for (size_t i = 1; i < count; ++i) {
         const SdfPrimitive& prim = mPrims[i];
-        if (coarse && prim.detail) continue;
+        if (coarse ? prim.detail : prim.coarseOnly) continue;
         if (prim.kind == SdfPrimitive::Kind::Band) {
             // The surface grown by the thickness inside the strip, ramping
             // up over kBandBevel from its sides: a square step would be
@@ -209,8 +209,9 @@ glm::vec3 CreatureSdf::project(const glm::vec3& p, int steps, float maxStep, glm
 void CreatureSdf::boneDistances(const glm::vec3& p, float* out) const {
     std::fill(out, out + kJointCount, 1e9f);
     for (const SdfPrimitive& prim : mPrims) {
-        // Carvings and gear belong to the shapes they cut or cover.
-        if (prim.kind == SdfPrimitive::Kind::Band || prim.subtract) continue;
+        // Skinning follows the cage's field: detail belongs to the shapes
+        // it sits on (so the cage's weights are as they were before it).
+        if (prim.detail) continue;
         float& slot = out[static_cast<uint32_t>(prim.bone)];
         slot = std::min(slot, primitiveDistance(prim, p));
     }

@@ -21,6 +21,9 @@ struct SdfPrimitive {
     /// Millimetre detail (lids, mouth, teeth, gear): in the sculpt's field
     /// only, not in the one the cage is extracted from (see coarseDistance).
     bool detail = false;
+    /// The reverse: a soft stand-in for detail the cage cannot hold (the
+    /// eye's mound), in the cage's field only.
+    bool coarseOnly = false;
     glm::vec3 a{0.0f};         ///< ellipsoid centre, or capsule start
     glm::vec3 b{0.0f};         ///< capsule end
     glm::vec3 radii{0.1f};     ///< ellipsoid semi-axes; capsule radii in x (at a) and y (at b)

@@ -26,8 +26,17 @@ float CreatureSdf::rayHit(const glm::vec3& origin, const glm::vec3& dir, float m
 void CreatureSdf::addEyes(const CreatureParams& c) {
     const glm::vec3 head = c.at(Joint::Head);
     const float hr = c.headRadius, r = c.eyeRadius;
-    for (int i = 0; i < 2; ++i) {
+    // Right eye first: the order of the smooth unions is the order the
+    // cage's field always had, which keeps the cage byte-identical.
+    for (int i : {1, 0}) {
         const float side = i == 0 ? 1.0f : -1.0f;  // eyes[0] is the left (+X) eye
+        // The cage keeps the soft mound the eyes were before the sockets
+        // and lids: a protruding ball with a crisp crease pinches the
+        // simplified cage and its far mesh (open edges, kinked normals).
+        SdfPrimitive mound = ellipsoidShape(head + glm::vec3(side * hr * 0.33f, 0.005f, hr * 0.86f), glm::vec3(0.022f),
+                                            0.012f, Joint::Head);
+        mound.coarseOnly = true;
+        add(mound);
         EyeLayout& eye = mLayout.eyes[i];
         eye.radius = r;
         // Bulging goblin eyes: the centre sits 0.3 radii under the brow's
@@ -37,12 +46,18 @@ void CreatureSdf::addEyes(const CreatureParams& c) {
         eye.centre = glm::vec3(onFace.x, onFace.y, z - 0.3f * r);
         eye.gaze = glm::normalize(glm::vec3(side * 0.1f, -0.12f, 1.0f));
         // The socket: a smooth pit a little wider than the ball, so the
-        // corners of the eye read as recesses at close range.
-        SdfPrimitive socket = ellipsoidShape(eye.centre, glm::vec3(r * 1.25f), 0.008f, Joint::Head);
+        // corners of the eye read as recesses at close range. The blends
+        // here are as soft as still reads crisp: the displacement map has
+        // ~1.5 mm texels, and sharper creases where a UV seam crosses the
+        // eye leave the two charts' bilinear fetches disagreeing by more
+        // than the seam test's 0.1 mm (LoadedCreatureSeams).
+        SdfPrimitive socket = ellipsoidShape(eye.centre, glm::vec3(r * 1.25f), 0.016f, Joint::Head);
         socket.subtract = true;
         socket.detail = true;
         add(socket);
-        add(ellipsoidShape(eye.centre, glm::vec3(r), 0.003f, Joint::Head));
+        SdfPrimitive ball = ellipsoidShape(eye.centre, glm::vec3(r), 0.006f, Joint::Head);
+        ball.detail = true;
+        add(ball);
         // Lids: shells around the ball cut by a plane each. The upper lid's
         // edge drops towards the nose (a scowl) and sits lidDroop radii
         // above the centre; the lower one covers the bottom of the ball.
