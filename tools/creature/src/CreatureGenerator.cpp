@@ -53,6 +53,8 @@ Creature generateCreature(const CreatureOptions& options, const ProgressFn& prog
     CreatureSdf sdf(params);
     SkinDetail skin(params, sdf);
 
+    // The cage comes from the coarse field (no teeth, lids or gear edges:
+    // those reach the near tier through the sculpt and its maps).
     // A 7 mm grid resolves the ear tips and fingers for a 5K cage; small
     // cages (tests, previews) do with a coarser one. Where the arms or
     // fingers nearly touch, edge collapses can pinch the surface; a grid a
