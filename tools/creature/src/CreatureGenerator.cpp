@@ -51,8 +51,10 @@ Creature generateCreature(const CreatureOptions& options, const ProgressFn& prog
     };
     CreatureParams params = makeCreatureParams(options.seed);
     CreatureSdf sdf(params);
-    SkinDetail skin(params);
+    SkinDetail skin(params, sdf);
 
+    // The cage comes from the coarse field (no teeth, lids or gear edges:
+    // those reach the near tier through the sculpt and its maps).
     // A 7 mm grid resolves the ear tips and fingers for a 5K cage; small
     // cages (tests, previews) do with a coarser one. Where the arms or
     // fingers nearly touch, edge collapses can pinch the surface; a grid a
@@ -60,7 +62,7 @@ Creature generateCreature(const CreatureOptions& options, const ProgressFn& prog
     float cell = options.cageTriangles >= 3000 ? 0.007f : 0.011f;
     IndexedMesh welded;
     for (float scale : {1.0f, 0.96f, 1.04f, 0.92f, 1.08f, 0.88f}) {
-        IndexedMesh dense = marchTetrahedra([&sdf](const glm::vec3& p) { return sdf.distance(p); }, sdf.boundsMin(),
+        IndexedMesh dense = marchTetrahedra([&sdf](const glm::vec3& p) { return sdf.coarseDistance(p); }, sdf.boundsMin(),
                                             sdf.boundsMax(), cell * scale, [&](float f) { report("shape", f); });
         report("cage", 0.0f);
         welded = simplifyMesh(keepLargestComponent(dense), options.cageTriangles);

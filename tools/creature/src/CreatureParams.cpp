@@ -51,6 +51,21 @@ CreatureParams makeCreatureParams(uint32_t seed) {
     c.limbThickness = rng.range(0.85f, 1.2f);
     c.footLength = rng.range(0.17f, 0.22f);
     c.skinHue = rng.range(-1.0f, 1.0f);
+    c.eyeRadius = rng.range(0.021f, 0.026f);
+    c.lidDroop = rng.range(0.05f, 0.4f);
+    c.irisHue = rng.range(0.0f, 1.0f);
+    c.mouthWidth = rng.range(0.038f, 0.052f);
+    c.grin = rng.range(0.0f, 1.0f);
+    c.toothCount = 4u + static_cast<uint32_t>(rng.range(0.0f, 2.999f));
+    c.tuskLength = rng.range(0.014f, 0.026f);
+    c.leatherHue = rng.range(0.0f, 1.0f);
+    // Every creature wears the belt; the outfit cycles with the seed
+    // (strap and bracers, strap only, bracers only, belt only), so any
+    // four neighbouring seeds, and the crowd's seeds 1 to 3, all differ.
+    // Seed 1, the docs' close-up, wears everything.
+    const uint32_t outfit = seed % 4u;
+    c.chestStrap = outfit == 1u || outfit == 2u;
+    c.bracers = outfit == 1u || outfit == 3u;
 
     auto set = [&c](Joint j, const glm::vec3& p) { c.joints[static_cast<uint32_t>(j)] = p; };
     auto setTip = [&c](Joint j, const glm::vec3& p) { c.tips[static_cast<uint32_t>(j)] = p; };

@@ -1,7 +1,8 @@
 #include "CreatureTexture.h"
 
-#include "tessera/core/ParallelFor.h"
+#include "FeatureColour.h"
 #include "SdfNoise.h"
+#include "tessera/core/ParallelFor.h"
 
 #include <algorithm>
 #include <cmath>
@@ -28,12 +29,28 @@ glm::vec3 skinColour(const glm::vec3& p, const SkinSample& s, const CreaturePara
     return glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f));
 }
 
+/// Where the near tier shows this texel: the baker measures the sculpt
+/// along the cage's normal, so colour the shape's point along that normal
+/// too (a projection along the field's gradient lands a few millimetres
+/// off, which at close range puts a pupil or a stitch beside its relief).
+glm::vec3 onShapeAlongNormal(const CreatureSdf& sdf, const glm::vec3& q, const glm::vec3& n) {
+    float len = glm::length(n);
+    if (len < 1e-6f) return sdf.project(q, 1, 0.04f, nullptr);
+    glm::vec3 dir = n / len;
+    // Secant-free steps: the field is close to a distance, so stepping by
+    // it along a ray that meets the surface near-perpendicularly converges;
+    // the cap keeps a grazing ray from running off.
+    float t = 0.0f;
+    for (int k = 0; k < 4; ++k) t = std::clamp(t - sdf.distance(q + dir * t), -0.04f, 0.04f);
+    return q + dir * t;
+}
+
 } // namespace
 
 character::TextureImage paintBaseColor(const character::CageMesh& cage, const CreatureSdf& sdf,
                                        const SkinDetail& skin, const CreatureParams& params, uint32_t size) {
     const size_t texels = static_cast<size_t>(size) * size;
-    std::vector<glm::vec3> where(texels);
+    std::vector<glm::vec3> where(texels), normal(texels);
     std::vector<uint8_t> covered(texels, 0);
     const float fs = static_cast<float>(size);
     for (size_t t = 0; t < cage.indices.size(); t += 3) {
@@ -56,6 +73,7 @@ character::TextureImage paintBaseColor(const character::CageMesh& cage, const Cr
                 if (w0 < -1e-4f || w1 < -1e-4f || w2 < -1e-4f) continue;
                 size_t i = static_cast<size_t>(y) * size + static_cast<size_t>(x);
                 where[i] = a.position * w0 + b.position * w1 + c.position * w2;
+                normal[i] = a.normal * w0 + b.normal * w1 + c.normal * w2;
                 covered[i] = 1;
             }
         }
@@ -66,8 +84,9 @@ character::TextureImage paintBaseColor(const character::CageMesh& cage, const Cr
         const size_t begin = range.begin, end = range.end;
         for (size_t i = begin; i < end; ++i) {
             if (!covered[i]) continue;
-            glm::vec3 p = sdf.project(where[i], 1, 0.04f, nullptr);
-            colour[i] = skinColour(p, skin.sample(p), params);
+            glm::vec3 p = onShapeAlongNormal(sdf, where[i], normal[i]);
+            SkinSample s = skin.sample(p);
+            colour[i] = featureColour(s.feature, p, params, skinColour(p, s, params));
         }
     });
 

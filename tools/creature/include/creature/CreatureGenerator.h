@@ -30,7 +30,8 @@ struct Creature {
     /// The cage with UVs, tangents, skin weights, skeleton and clips
     /// ("walk", "idle"); no maps yet (the baker makes them).
     character::CharacterAsset asset;
-    /// The detailed sculpt (wrinkles, warts, bumps) the maps are baked from.
+    /// The detailed sculpt (wrinkles, warts, bumps; eyes, mouth, teeth and
+    /// gear) the maps are baked from.
     SculptMesh sculpt;
     /// How the far mesh (`asset.farMesh`) was simplified from the cage: its
     /// method and error, for the report.
@@ -43,7 +44,7 @@ using ProgressFn = std::function<void(const char* stage, float fraction)>;
 /// Makes one creature. The same options give the same bytes on every run.
 ///
 /// Stages (progress names): "shape" extracts the base distance field's
-/// surface (marching tetrahedra, ~7 mm grid); "cage" simplifies it to the
+/// surface without its millimetre detail (marching tetrahedra, ~7 mm grid); "cage" simplifies it to the
 /// target (meshoptimizer), builds the UV atlas (axis-facing charts, shelf
 /// packed with a 10-texel gutter at 2048), normals, tangents and skin
 /// weights, then simplifies the cage into the far LOD mesh

@@ -46,6 +46,19 @@ struct CreatureParams {
     float limbThickness = 1.0f; ///< multiplies every limb radius
     float footLength = 0.2f;
     float skinHue = 0.0f;       ///< -1..1, shifts the palette between olive and grey-green
+
+    // Close-up features (docs/CHARACTERS.md, "Face and gear"): drawn after
+    // the proportions above, so adding them kept every seed's body.
+    float eyeRadius = 0.023f;   ///< eyeball radius
+    float lidDroop = 0.2f;      ///< upper lid edge above the eye centre, in eye radii (lower: sleepier)
+    float irisHue = 0.5f;       ///< 0..1, iris from sulphur yellow through amber to blood red
+    float mouthWidth = 0.045f;  ///< half-width of the lip line
+    float grin = 0.5f;          ///< 0..1, how far the mouth corners turn up
+    uint32_t toothCount = 5;    ///< pointed upper teeth along the lip line
+    float tuskLength = 0.02f;   ///< the two lower tusks, from the lower lip up
+    float leatherHue = 0.5f;    ///< 0..1, the gear's leather from tan to dark oxblood
+    bool chestStrap = true;     ///< a leather strap from the left shoulder to the right hip (seeds 1, 2 mod 4)
+    bool bracers = true;        ///< leather bracers on both forearms (seeds 1, 3 mod 4)
     /// Bind-pose positions of the joints, indexed by Joint.
     std::array<glm::vec3, kJointCount> joints{};
     /// Ends of the bones that have no child joint (head top, ear tips,
