@@ -127,7 +127,9 @@ void BasicTerrainBackend::splatTerrain(backend::TerrainHandle handle, std::span<
     // pass (and before this frame's factor passes) reads it.
     suspendMainPass();
     mSplatPass.record(*mFrame, *terrain, splats);
-    terrain->invalidateSunVisibility(); // the new craters cast and catch shadows
+    // The new craters cast and catch shadows.
+    for (const auto& splat : splats)
+        terrain->invalidateSunVisibility(glm::vec4(splat.center - splat.radius, splat.center + splat.radius));
     mReport.splatsApplied += static_cast<uint32_t>(splats.size());
 }
 

@@ -108,6 +108,14 @@ bool GpuTerrain::sunVisibilityStale(const glm::vec3& sun) const {
 void GpuTerrain::markSunVisibility(const glm::vec3& sun) {
     mSunVisibilityFor = sun;
     mSunVisibilityValid = true;
+    mSunDirty.reset();
+}
+
+void GpuTerrain::invalidateSunVisibility(const glm::vec4& region) {
+    if (!mSunDirty) mSunDirty = region;
+    else
+        mSunDirty = glm::vec4(glm::min(glm::vec2(*mSunDirty), glm::vec2(region)),
+                              glm::max(glm::vec2(mSunDirty->z, mSunDirty->w), glm::vec2(region.z, region.w)));
 }
 
 gpu::Buffer& GpuTerrain::writeVisiblePatches(uint32_t slot, std::span<const uint32_t> patches) {

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 
 namespace tessera::backends {
@@ -52,13 +53,18 @@ public:
     /// height map, at most 1024 texels a side (TerrainSunPass renders it);
     /// SHADER_READ_ONLY_OPTIMAL once rendered.
     gpu::Image& sunVisibility() { return mSunVisibility; }
-    /// Whether the map must be redrawn for `sun`: never drawn yet, the height
-    /// map changed (invalidateSunVisibility), or the sun moved.
+    /// Whether the whole map must be redrawn for `sun`: never drawn yet, or
+    /// the sun moved.
     bool sunVisibilityStale(const glm::vec3& sun) const;
-    /// Records that the map now holds the visibility of `sun`.
+    /// World XZ rectangle (min x, min z, max x, max z) whose texels a crater
+    /// may have changed since the map was drawn; empty when none.
+    const std::optional<glm::vec4>& sunVisibilityDirty() const { return mSunDirty; }
+    /// Records that the map now holds the visibility of `sun` everywhere.
     void markSunVisibility(const glm::vec3& sun);
-    /// Craters changed the height map: redraw the map before the next draw.
-    void invalidateSunVisibility() { mSunVisibilityValid = false; }
+    /// A crater changed the height map inside the world XZ rectangle
+    /// `region` (min x, min z, max x, max z): the texels whose march towards
+    /// the sun crosses it must be redrawn before the next draw.
+    void invalidateSunVisibility(const glm::vec4& region);
     /// One control-mesh quad in patch-local [0,1]^2 (4 vertices, 6 indices),
     /// instanced once per visible patch for the untessellated draw.
     gpu::Buffer& quadVertices() { return mQuadVertices; }
@@ -91,6 +97,7 @@ private:
     gpu::Sampler mDetailSampler;
     glm::vec3 mSunVisibilityFor{0.0f};
     bool mSunVisibilityValid = false;
+    std::optional<glm::vec4> mSunDirty;
     gpu::Buffer mQuadVertices;
     gpu::Buffer mQuadIndices;
     struct Slot {

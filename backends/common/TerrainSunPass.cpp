@@ -10,7 +10,7 @@
 namespace tessera::backends {
 
 namespace {
-// The march: 40 steps from one height sample out to ~3 km, each 18% longer
+// The march: 40 steps from one height sample out to ~2.5 km, each 18% longer
 // than the last (near steps find the small crests, far ones the mountains).
 constexpr float kSteps = 40.0f;
 constexpr float kGrowth = 1.18f;
@@ -36,29 +36,67 @@ TerrainSunPass::TerrainSunPass(gpu::Device& device, const std::string& backendNa
     mPipeline = gpu::Pipeline(device, desc);
 }
 
+/// The texels of `terrain`'s map whose march towards `sun` crosses the world
+/// XZ rectangle `region` (min x, min z, max x, max z): the rectangle swept
+/// back from the sun over the march's reach, plus two texels for the
+/// bilinear height samples; empty (zero extent) when it misses the map.
+VkRect2D TerrainSunPass::affectedTexels(GpuTerrain& terrain, const glm::vec4& region, const glm::vec3& sun) {
+    const shader::TerrainUniforms& u = terrain.uniforms();
+    const float spacing = u.worldSize.w;
+    glm::vec2 lo(region.x, region.y), hi(region.z, region.w);
+    const float horizontal = glm::length(glm::vec2(sun.x, sun.z));
+    if (horizontal > 1e-4f) {
+        const glm::vec2 back = -glm::vec2(sun.x, sun.z) / horizontal * (spacing * std::pow(kGrowth, kSteps - 1.0f));
+        lo = glm::min(lo, lo + back);
+        hi = glm::max(hi, hi + back);
+    }
+    gpu::Image& map = terrain.sunVisibility();
+    const glm::vec2 size(float(map.width()), float(map.height()));
+    // World XZ to texels: terrainTexcoord() times the map's size.
+    auto toTexel = [&](glm::vec2 xz) { return (xz / spacing + 0.5f) * glm::vec2(u.heightTexel) * size; };
+    const glm::vec2 a = glm::clamp(glm::floor(toTexel(lo)) - 2.0f, glm::vec2(0.0f), size);
+    const glm::vec2 b = glm::clamp(glm::ceil(toTexel(hi)) + 2.0f, glm::vec2(0.0f), size);
+    VkRect2D rect{{int32_t(a.x), int32_t(a.y)}, {uint32_t(b.x - a.x), uint32_t(b.y - a.y)}};
+    return rect;
+}
+
 void TerrainSunPass::update(gpu::FrameContext& frame, GpuTerrain& terrain, const glm::vec3& sunDirection) {
-    if (!terrain.sunVisibilityStale(sunDirection)) return;
+    const bool whole = terrain.sunVisibilityStale(sunDirection);
+    if (!whole && !terrain.sunVisibilityDirty()) return;
+    gpu::Image& map = terrain.sunVisibility();
+    VkRect2D area{{0, 0}, {map.width(), map.height()}};
+    // After craters, only the texels whose horizon they can change: a full
+    // map is hundreds of milliseconds on lavapipe, a crater's share a few.
+    if (!whole) area = affectedTexels(terrain, *terrain.sunVisibilityDirty(), sunDirection);
+    if (area.extent.width == 0 || area.extent.height == 0) {
+        terrain.markSunVisibility(sunDirection);
+        return;
+    }
     gpu::PassScope pass(frame, "terrain.sun");
     VkCommandBuffer cmd = frame.cmd();
-    gpu::Image& map = terrain.sunVisibility();
     const VkImageAspectFlags color = VK_IMAGE_ASPECT_COLOR_BIT;
-    // Every texel is rewritten, so the old contents go (UNDEFINED); earlier
-    // terrain draws may still be sampling it, hence the fragment stage.
-    gpu::transitionImage(cmd, map.handle(), color, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                         VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                         VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    // A whole redraw rewrites every texel, so the old contents go
+    // (UNDEFINED); a partial one keeps the rest. Earlier terrain draws may
+    // still be sampling it, hence the fragment stage.
+    gpu::transitionImage(cmd, map.handle(), color,
+                         whole ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                         VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, 0,
+                         VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                         VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
 
     VkRenderingAttachmentInfo attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     attachment.imageView = map.view();
     attachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    attachment.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    attachment.loadOp = whole ? VK_ATTACHMENT_LOAD_OP_DONT_CARE : VK_ATTACHMENT_LOAD_OP_LOAD;
     attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {map.width(), map.height()}};
+    rendering.renderArea = area;
     rendering.layerCount = 1;
     rendering.colorAttachmentCount = 1;
     rendering.pColorAttachments = &attachment;
     vkCmdBeginRendering(cmd, &rendering);
+    // The viewport is the whole map so fragment (i, j) is texel (i, j); the
+    // scissor keeps the work to the area.
     const VkViewport viewport{0.0f, 0.0f, float(map.width()), float(map.height()), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &rendering.renderArea);

@@ -6,8 +6,9 @@
 /// The terrain's shading samples it bilinearly for soft self-shadowing
 /// (docs/LOOKS.md). A fragment shader into a render target, so the
 /// D3D9-style backend runs it too. The map is redrawn only when it is stale:
-/// after the terrain's creation, after craters changed the height map, and
-/// when the sun moved.
+/// whole after the terrain's creation and when the sun moved, and after
+/// craters only where their change can reach (the texels whose march
+/// crosses them).
 
 #include "GpuTerrain.h"
 #include "tessera/gpu/FrameContext.h"
@@ -25,12 +26,14 @@ public:
     TerrainSunPass(gpu::Device& device, const std::string& backendName);
 
     /// Records a "terrain.sun" pass when `terrain`'s map is stale for
-    /// `sunDirection` (unit, towards the sun). Must run outside any
+    /// `sunDirection` (unit, towards the sun) or craters changed part of it. Must run outside any
     /// rendering, after this frame's splats; leaves the map
     /// SHADER_READ_ONLY_OPTIMAL and visible to fragment shaders.
     void update(gpu::FrameContext& frame, GpuTerrain& terrain, const glm::vec3& sunDirection);
 
 private:
+    static VkRect2D affectedTexels(GpuTerrain& terrain, const glm::vec4& region, const glm::vec3& sun);
+
     gpu::Device* mDevice = nullptr;
     gpu::PipelineLayout mLayout;
     gpu::Pipeline mPipeline;

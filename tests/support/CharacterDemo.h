@@ -87,7 +87,9 @@ inline std::vector<std::string> soloCharacterArgs(const std::string& backend, co
                                                   const std::string& clearColor, const std::string& orbitDistance,
                                                   int width, int height) {
     std::vector<std::string> args = {"--backend", backend, "--crowd", "0", "--model", model, "--no-terrain"};
-    args.insert(args.end(), {"--clear-color", clearColor, "--orbit-distance", orbitDistance});
+    // The plain look: the background stays the clear colour (the full look
+    // paints the sky there), so holes show as that colour.
+    args.insert(args.end(), {"--clear-color", clearColor, "--look", "plain", "--orbit-distance", orbitDistance});
     args.insert(args.end(), {"--width", std::to_string(width), "--height", std::to_string(height)});
     return args;
 }

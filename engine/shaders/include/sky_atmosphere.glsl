@@ -27,7 +27,8 @@ float tsHenyeyGreenstein(float cosTheta, float g) {
     return (1.0 - g * g) / (4.0 * kTsPi * denom * sqrt(denom));
 }
 
-// Sky radiance towards unit direction `dir`, without the sun's disc.
+// Sky radiance towards unit direction `dir` (at or above the horizon:
+// tsFogColor lifts rays below it), without the sun's disc.
 vec3 tsSkyRadiance(vec3 dir) {
     vec3 sun = tsSunDirection();
     float mu = dot(dir, sun);
@@ -45,9 +46,7 @@ vec3 tsSkyRadiance(vec3 dir) {
     sky += vec3(0.35, 0.18, 0.05) * low * low * horizonness * max(mu, 0.0);
     // Mie halo: strong forward lobe, more haze near the horizon.
     sky += frame.sunColor.rgb * tsHenyeyGreenstein(mu, 0.78) * (0.035 + 0.06 * horizonness);
-    // Below the horizon (only seen past the terrain's edge): a darker haze.
-    float below = clamp(-dir.y * 4.0, 0.0, 1.0);
-    return mix(sky, horizon * 0.45, below);
+    return sky;
 }
 
 // The sun's disc with a soft limb, added to the sky where no geometry covers it.
