@@ -36,7 +36,15 @@ protected:
     /// Runs the tool with `arguments`; returns its exit status, stderr in mStderr.
     int run(const std::string& arguments) {
         const fs::path errors = mDir / "stderr.txt";
-        const std::string command = "'" + mTool.string() + "' " + arguments + " 2>'" + errors.string() + "'";
+        // Appended piece by piece: GCC 12 misreads `"'" + std::string&&` here
+        // as an overlapping copy (-Wrestrict).
+        std::string command = "'";
+        command += mTool.string();
+        command += "' ";
+        command += arguments;
+        command += " 2>'";
+        command += errors.string();
+        command += "'";
         int status = std::system(command.c_str());
         std::ifstream in(errors);
         mStderr.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
