@@ -30,7 +30,7 @@ constexpr uint32_t kDefaultHeadlessFrames = 60;
 Status runFlythrough(const Options& options) {
     auto& profiler = profiler::Profiler::global();
     // A window's overlay shows per-pass GPU times, so it profiles too.
-    profiler.setEnabled(!options.capture.empty() || !options.benchmark.empty() || options.window);
+    profiler.setEnabled(!options.capture.empty() || !options.benchmark.empty() || options.overlay.value_or(options.window));
 
     // --warmup frames run first and are discarded from the benchmark; --frames
     // counts the frames after them.
