@@ -49,7 +49,8 @@ struct HoleReport {
 /// 4-connected magenta pixels (4, not 8: a one-pixel diagonal crack must not
 /// leak the fill through the surface), then groups what the fill did not
 /// reach into 8-connected holes.
-inline HoleReport findHoles(const Rgba8Image& image) {
+/// With `enclosed`, also marks every hole pixel (1) in a mask of the image's size.
+inline HoleReport findHoles(const Rgba8Image& image, std::vector<uint8_t>* enclosed = nullptr) {
     HoleReport report;
     const uint32_t w = image.width, h = image.height;
     if (w == 0 || h == 0 || image.pixels.size() < size_t(w) * h * 4) return report;
@@ -82,6 +83,10 @@ inline HoleReport findHoles(const Rgba8Image& image) {
         if (x + 1 < w) reach(i + 1);
         if (y > 0) reach(i - w);
         if (y + 1 < h) reach(i + w);
+    }
+    if (enclosed) {
+        enclosed->assign(state.size(), 0);
+        for (size_t i = 0; i < state.size(); ++i) (*enclosed)[i] = state[i] == 1 ? 1 : 0;
     }
     // What is left at 1 is enclosed; label it (3: labelled).
     for (size_t seed = 0; seed < state.size(); ++seed) {
