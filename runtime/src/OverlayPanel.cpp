@@ -136,11 +136,15 @@ void drawOverlayPanel(SceneRun& run, const FrameStats& stats, OverlayState& stat
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSizeConstraints(ImVec2(360, 0), ImVec2(520, 2000));
     ImGui::Begin("Tessera", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    // Tab is the free camera's key, not the panel's focus cycling: with it a
+    // Tab could put a slider into text entry and take the keyboard.
+    ImGui::PushAllowKeyboardFocus(false);
     drawFrameSection(run, stats);
     if (ImGui::CollapsingHeader("Counts", ImGuiTreeNodeFlags_DefaultOpen)) drawCountsSection(run, stats);
     if (ImGui::CollapsingHeader("Controls", ImGuiTreeNodeFlags_DefaultOpen)) drawControls(run, state, actions);
     ImGui::TextDisabled("F1 overlay  Tab camera  WASD/QE move  right mouse look  Shift fast  Esc quit");
     if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
+    ImGui::PopAllowKeyboardFocus();
     ImGui::End();
 }
 

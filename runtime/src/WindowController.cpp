@@ -48,18 +48,20 @@ WindowController::~WindowController() {
 void WindowController::handleKeys(OverlayActions& actions) {
     if (!mInput) return; // headless --overlay: nothing to press
     mInput->beginFrame();
-    if (mOverlay->wantsKeyboard()) return;
     WindowInput& in = *mInput;
+    // Function keys and Esc never type into a field: they work even while
+    // the overlay has the keyboard.
     if (in.pressed(GLFW_KEY_ESCAPE)) in.requestClose();
     if (in.pressed(GLFW_KEY_F1)) {
         mVisible = !mVisible;
         log::info(mVisible ? "overlay shown" : "overlay hidden");
     }
-    if (in.pressed(GLFW_KEY_TAB)) mState.freeCamera = !mState.freeCamera;
     if (in.pressed(GLFW_KEY_F2)) mRun.liveOptions().wireframe = !mRun.liveOptions().wireframe;
     if (in.pressed(GLFW_KEY_F3)) mRun.liveOptions().lodColors = !mRun.liveOptions().lodColors;
     if (in.pressed(GLFW_KEY_F11)) actions.capture = true;
     if (in.pressed(GLFW_KEY_F12)) actions.screenshot = true;
+    if (mOverlay->wantsKeyboard()) return;
+    if (in.pressed(GLFW_KEY_TAB)) mState.freeCamera = !mState.freeCamera;
     if (in.pressed(GLFW_KEY_M)) actions.dropMeteor = true;
     const int backendKeys[] = {GLFW_KEY_1, GLFW_KEY_2, GLFW_KEY_3};
     for (size_t i = 0; i < mState.backends.size() && i < 3; ++i)
