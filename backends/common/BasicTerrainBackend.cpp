@@ -2,6 +2,7 @@
 
 #include "tessera/shaders/TessFactors.h"
 
+#include "CommandHelpers.h"
 #include "FrameUniformsBuilder.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/RenderTarget.h"
@@ -183,29 +184,13 @@ void BasicTerrainBackend::pushTerrainDescriptors(VkPipelineBindPoint bindPoint, 
     VkDescriptorImageInfo detailInfo{terrain.detailSampler().handle(), terrain.detailTextures().view(),
                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     const VkDescriptorImageInfo shadowInfo = mShadowPass.descriptor();
-    std::vector<VkWriteDescriptorSet> writes(6);
-    for (auto& w : writes) {
-        w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-        w.descriptorCount = 1;
-    }
-    writes[0].dstBinding = TS_BINDING_FRAME;
-    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    writes[0].pBufferInfo = &frameInfo;
-    writes[1].dstBinding = TS_BINDING_TERRAIN;
-    writes[1].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    writes[1].pBufferInfo = &terrainInfo;
-    writes[2].dstBinding = TS_BINDING_HEIGHTMAP;
-    writes[2].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    writes[2].pImageInfo = &heightInfo;
-    writes[3].dstBinding = TS_BINDING_SUN_VISIBILITY;
-    writes[3].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    writes[3].pImageInfo = &sunInfo;
-    writes[4].dstBinding = TS_BINDING_DETAIL;
-    writes[4].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    writes[4].pImageInfo = &detailInfo;
-    writes[5].dstBinding = TS_BINDING_CHARACTER_SHADOW;
-    writes[5].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    writes[5].pImageInfo = &shadowInfo;
+    std::vector<VkWriteDescriptorSet> writes = {
+        bufferWrite(TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &frameInfo),
+        bufferWrite(TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &terrainInfo),
+        imageWrite(TS_BINDING_HEIGHTMAP, &heightInfo),
+        imageWrite(TS_BINDING_SUN_VISIBILITY, &sunInfo),
+        imageWrite(TS_BINDING_DETAIL, &detailInfo),
+        imageWrite(TS_BINDING_CHARACTER_SHADOW, &shadowInfo)};
     writes.insert(writes.end(), extra.begin(), extra.end());
     mDevice->fn().cmdPushDescriptorSet(mFrame->cmd(), bindPoint, layout.handle(), 0, static_cast<uint32_t>(writes.size()),
                                        writes.data());

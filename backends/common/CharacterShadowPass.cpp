@@ -1,6 +1,7 @@
 #include "CharacterShadowPass.h"
 
 #include "tessera/gpu/Barriers.h"
+#include "tessera/gpu/RenderTarget.h"
 #include "tessera/shaders/CharacterShadow.h"
 
 #include "character_shadow.frag.spv.h"
@@ -71,20 +72,9 @@ void CharacterShadowPass::record(gpu::FrameContext& frame, std::span<const glm::
                          VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                          VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                          VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-    VkRenderingAttachmentInfo attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    attachment.imageView = mMask.view();
-    attachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {TS_CHARACTER_SHADOW_SIZE, TS_CHARACTER_SHADOW_SIZE}};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &attachment;
-    vkCmdBeginRendering(cmd, &rendering);
-    const VkViewport viewport{0.0f, 0.0f, float(TS_CHARACTER_SHADOW_SIZE), float(TS_CHARACTER_SHADOW_SIZE), 0.0f, 1.0f};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &rendering.renderArea);
+    const VkRect2D whole{{0, 0}, {TS_CHARACTER_SHADOW_SIZE, TS_CHARACTER_SHADOW_SIZE}};
+    gpu::beginColorRendering(cmd, mMask.view(), TS_CHARACTER_SHADOW_SIZE, TS_CHARACTER_SHADOW_SIZE, whole,
+                             VK_ATTACHMENT_LOAD_OP_CLEAR);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
     shader::CharacterShadowParams params{};
     params.region = glm::vec4(region.x, region.y, region.z, 1.0f / region.z);

@@ -1,5 +1,6 @@
 #include "TerrainSplatPass.h"
 
+#include "tessera/gpu/RenderTarget.h"
 #include "tessera/shaders/CraterProfile.h"
 
 #include "fullscreen.vert.spv.h"
@@ -63,22 +64,9 @@ void TerrainSplatPass::splatOne(VkCommandBuffer cmd, GpuTerrain& terrain, const 
                          VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                          VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
 
-    VkRenderingAttachmentInfo attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    attachment.imageView = heights.aliasView();
-    attachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    attachment.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{origin.x, origin.y}, extent};
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &attachment;
-    vkCmdBeginRendering(cmd, &rendering);
-    // The viewport is the whole map so fragment (i, j) is sample (i, j); the
-    // scissor keeps the work to the crater's square.
-    const VkViewport viewport{0.0f, 0.0f, float(heights.width()), float(heights.height()), 0.0f, 1.0f};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &rendering.renderArea);
+    // Fragment (i, j) is sample (i, j); the work stays in the crater's square.
+    gpu::beginColorRendering(cmd, heights.aliasView(), heights.width(), heights.height(), {{origin.x, origin.y}, extent},
+                             VK_ATTACHMENT_LOAD_OP_LOAD);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
     VkDescriptorImageInfo source{mNearest.handle(), scratch.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};

@@ -1,5 +1,8 @@
 #include "TerrainSunPass.h"
 
+#include "CommandHelpers.h"
+#include "tessera/gpu/RenderTarget.h"
+
 #include "tessera/shaders/TerrainUniforms.h"
 
 #include "fullscreen.vert.spv.h"
@@ -84,36 +87,15 @@ void TerrainSunPass::update(gpu::FrameContext& frame, GpuTerrain& terrain, const
                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                          VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
 
-    VkRenderingAttachmentInfo attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    attachment.imageView = map.view();
-    attachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    attachment.loadOp = whole ? VK_ATTACHMENT_LOAD_OP_DONT_CARE : VK_ATTACHMENT_LOAD_OP_LOAD;
-    attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = area;
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachments = &attachment;
-    vkCmdBeginRendering(cmd, &rendering);
-    // The viewport is the whole map so fragment (i, j) is texel (i, j); the
-    // scissor keeps the work to the area.
-    const VkViewport viewport{0.0f, 0.0f, float(map.width()), float(map.height()), 0.0f, 1.0f};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &rendering.renderArea);
+    gpu::beginColorRendering(cmd, map.view(), map.width(), map.height(), area,
+                             whole ? VK_ATTACHMENT_LOAD_OP_DONT_CARE : VK_ATTACHMENT_LOAD_OP_LOAD);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
 
     VkDescriptorBufferInfo terrainInfo{terrain.uniformBuffer().handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorImageInfo heightInfo{terrain.sampler().handle(), terrain.heightMap().view(),
                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkWriteDescriptorSet writes[2]{{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}, {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET}};
-    writes[0].dstBinding = TS_BINDING_TERRAIN;
-    writes[0].descriptorCount = 1;
-    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    writes[0].pBufferInfo = &terrainInfo;
-    writes[1].dstBinding = TS_BINDING_HEIGHTMAP;
-    writes[1].descriptorCount = 1;
-    writes[1].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    writes[1].pImageInfo = &heightInfo;
+    const VkWriteDescriptorSet writes[2] = {bufferWrite(TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &terrainInfo),
+                                            imageWrite(TS_BINDING_HEIGHTMAP, &heightInfo)};
     mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0, 2, writes);
 
     shader::TerrainSunParams params{};

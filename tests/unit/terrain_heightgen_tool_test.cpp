@@ -2,52 +2,20 @@
 // for the same flags, and exit status 2 with a message naming the bad flag.
 // Skipped when the tool has not been built next to the tests.
 
+#include "ToolTest.h"
+
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
 namespace {
 
-class TerrainHeightgenTool : public ::testing::Test {
+class TerrainHeightgenTool : public tessera::test::ToolTest {
 protected:
-    void SetUp() override {
-        mTool = fs::path(TESSERA_BINARY_DIR) / "bin" / "tessera-heightgen";
-        if (!fs::exists(mTool)) GTEST_SKIP() << mTool << " not built";
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDir = fs::path(::testing::TempDir()) /
-               ("tessera_heightgen_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-        fs::remove_all(mDir);
-        fs::create_directories(mDir);
-    }
-    void TearDown() override {
-        if (!mDir.empty()) fs::remove_all(mDir);
-    }
-
-    /// Runs the tool with `arguments`; returns its exit status, stderr in mStderr.
-    int run(const std::string& arguments) {
-        const fs::path errors = mDir / "stderr.txt";
-        const std::string command = "'" + mTool.string() + "' " + arguments + " 2>'" + errors.string() + "'";
-        int status = std::system(command.c_str());
-        std::ifstream in(errors);
-        mStderr.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
-
-    static std::string read(const fs::path& path) {
-        std::ifstream in(path, std::ios::binary);
-        return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    }
-
-    fs::path mTool, mDir;
-    std::string mStderr;
+    void SetUp() override { useTool("tessera-heightgen"); }
 };
 
 } // namespace

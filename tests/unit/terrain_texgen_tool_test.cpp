@@ -2,15 +2,12 @@
 // for the same flags, different ones for another seed, and exit status 2 with
 // a message naming the bad flag. Skipped when the tool has not been built.
 
+#include "ToolTest.h"
+
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -18,46 +15,9 @@ namespace {
 
 const char* const kMaterials[] = {"grass", "dirt", "rock", "snow"};
 
-class TerrainTexgenTool : public ::testing::Test {
+class TerrainTexgenTool : public tessera::test::ToolTest {
 protected:
-    void SetUp() override {
-        mTool = fs::path(TESSERA_BINARY_DIR) / "bin" / "tessera-texgen";
-        if (!fs::exists(mTool)) GTEST_SKIP() << mTool << " not built";
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDir = fs::path(::testing::TempDir()) /
-               ("tessera_texgen_" + std::string(info->name()) + "_" + std::to_string(getpid()));
-        fs::remove_all(mDir);
-        fs::create_directories(mDir);
-    }
-    void TearDown() override {
-        if (!mDir.empty()) fs::remove_all(mDir);
-    }
-
-    /// Runs the tool with `arguments`; returns its exit status, stderr in mStderr.
-    int run(const std::string& arguments) {
-        const fs::path errors = mDir / "stderr.txt";
-        // Appended piece by piece: GCC 12 misreads `"'" + std::string&&` here
-        // as an overlapping copy (-Wrestrict).
-        std::string command = "'";
-        command += mTool.string();
-        command += "' ";
-        command += arguments;
-        command += " 2>'";
-        command += errors.string();
-        command += "'";
-        int status = std::system(command.c_str());
-        std::ifstream in(errors);
-        mStderr.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
-
-    static std::string read(const fs::path& path) {
-        std::ifstream in(path, std::ios::binary);
-        return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    }
-
-    fs::path mTool, mDir;
-    std::string mStderr;
+    void SetUp() override { useTool("tessera-texgen"); }
 };
 
 } // namespace

@@ -4,6 +4,7 @@
 #include "tessera/cli/Validators.h"
 #include "tessera/terrain/HeightMapGenerator.h"
 
+#include <bit>
 #include <limits>
 
 namespace tessera::heightgen {
@@ -35,8 +36,6 @@ void declare(cli::CommandLine& line, HeightGenOptions& o, std::string& out, uint
     app.add_flag("--quiet", o.quiet, "no progress bar and no summary line");
 }
 
-bool isPowerOfTwo(uint32_t v) { return v != 0 && (v & (v - 1)) == 0; }
-
 } // namespace
 
 std::string heightGenUsage() {
@@ -60,7 +59,7 @@ Result<HeightGenOptions> parseHeightGenOptions(int argc, const char* const* argv
         options.help = true;
         return options;
     }
-    if (!isPowerOfTwo(options.size))
+    if (!std::has_single_bit(options.size))
         return fail("--size must be a power of two between 64 and 8192, got ", std::to_string(options.size));
     if (out.empty()) return fail("--out FILE is required");
     options.out = out;

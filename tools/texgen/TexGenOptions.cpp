@@ -3,6 +3,7 @@
 #include "tessera/cli/CommandLine.h"
 #include "tessera/cli/Validators.h"
 
+#include <bit>
 #include <limits>
 
 namespace tessera::texgen {
@@ -26,8 +27,6 @@ void declare(cli::CommandLine& line, TexGenOptions& o, std::string& outDir) {
     app.add_flag("--quiet", o.quiet, "no summary line");
 }
 
-bool isPowerOfTwo(uint32_t v) { return v != 0 && (v & (v - 1)) == 0; }
-
 } // namespace
 
 std::string texGenUsage() {
@@ -49,7 +48,7 @@ Result<TexGenOptions> parseTexGenOptions(int argc, const char* const* argv) {
         options.help = true;
         return options;
     }
-    if (!isPowerOfTwo(options.size))
+    if (!std::has_single_bit(options.size))
         return fail("--size must be a power of two between 16 and 4096, got ", std::to_string(options.size));
     if (outDir.empty()) return fail("--out-dir DIR is required");
     options.outDir = outDir;

@@ -85,4 +85,22 @@ void RenderTarget::begin(VkCommandBuffer cmd, const float clear[4], VkAttachment
 
 void RenderTarget::endRendering(VkCommandBuffer cmd) { vkCmdEndRendering(cmd); }
 
+void beginColorRendering(VkCommandBuffer cmd, VkImageView view, uint32_t width, uint32_t height, const VkRect2D& area,
+                         VkAttachmentLoadOp load) {
+    VkRenderingAttachmentInfo attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    attachment.imageView = view;
+    attachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    attachment.loadOp = load;
+    attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    rendering.renderArea = area;
+    rendering.layerCount = 1;
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachments = &attachment;
+    vkCmdBeginRendering(cmd, &rendering);
+    const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &area);
+}
+
 } // namespace tessera::gpu

@@ -49,4 +49,14 @@ private:
     Image mDepth;
 };
 
+/// Begins dynamic rendering into one colour image (`view`, `width` x
+/// `height`, COLOR_ATTACHMENT_OPTIMAL, no depth) for the passes that render
+/// into a texture (splats, the sun-visibility map, the characters' shadow
+/// mask). The viewport covers the whole image, so fragment (i, j) is texel
+/// (i, j); the render area and the scissor are `area`, so the work stays
+/// there. `load` is the colour's load op (CLEAR clears to zero). End with
+/// vkCmdEndRendering.
+void beginColorRendering(VkCommandBuffer cmd, VkImageView view, uint32_t width, uint32_t height, const VkRect2D& area,
+                         VkAttachmentLoadOp load);
+
 } // namespace tessera::gpu
