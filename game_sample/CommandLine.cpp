@@ -71,6 +71,10 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
         o.look = t.look == "plain" ? backend::Look::Plain : backend::Look::Full;
         o.benchBothLooks = t.look == "both";
     }
+    if (given("--terrain-shading"))
+        o.terrainShading = t.terrainShading == "forward"    ? backend::TerrainShading::Forward
+                           : t.terrainShading == "deferred" ? backend::TerrainShading::Deferred
+                                                            : backend::TerrainShading::Auto;
     if (given("--sculpt")) o.subdiv.sculpt = t.sculpt == "raise" ? 1 : -1;
     if (given("--terrain-mode")) o.terrainMode = terrain::parseTerrainMode(t.terrainMode);
     if (given("--tess-metric")) o.tessellation.metric = *terrain::parseTessMetric(t.tessMetric);

@@ -105,6 +105,10 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
            "full (default): analytic sky, aerial-perspective fog, terrain sun shadows, filmic tone mapping | "
            "plain: the flat shading from before, to compare | both (--bench terrain only): every row in both "
            "looks, with the full look's cost (docs/LOOKS.md)");
+    choice("--terrain-shading", t.terrainShading, {"auto", "forward", "deferred"}, "S",
+           "where the full look shades the terrain: auto (default: deferred where the backend resolves in compute "
+           "on a GPU, i.e. hulldomain; forward on r2vb, streamout and lavapipe) | "
+           "forward (in its fragments) | deferred (once per pixel after the main pass; docs/LOOKS.md)");
     text("--sun", t.sun, "az,el",
          "the sun's azimuth (degrees from +X towards +Z) and elevation (1 to 90 degrees); default 36.9,58 "
          "(shadows, sky and fog follow it)");

@@ -64,6 +64,11 @@ Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
     desc.depthFormat = static_cast<VkFormat>(info.depthFormat);
     mFillPipeline = gpu::Pipeline(*mDevice, desc);
     mWireframeSupported = info.features.fillModeNonSolid;
+    // Auto defers where it pays (docs/LOOKS.md, measured on the H200): the
+    // compute resolve on a GPU costs a tenth of the terrain's fragment
+    // shading; a fullscreen fragment resolve costs more than shading the
+    // terrain's own fragments, and on a CPU rasterizer neither beats forward.
+    mDeferOnAuto = !info.features.isCpu && terrainResolveMode() == TerrainResolvePass::Mode::Compute;
     if (mWireframeSupported) {
         desc.name = caps.name + ".terrainLowres.wireframe";
         desc.polygonMode = VK_POLYGON_MODE_LINE;
@@ -74,6 +79,8 @@ Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
     mShadowPass = CharacterShadowPass(*mDevice, caps.name);
     mSkyPass = SkyPass(*mDevice, caps.name, static_cast<VkFormat>(info.colorFormat),
                        static_cast<VkFormat>(info.depthFormat));
+    mResolvePass = TerrainResolvePass(*mDevice, caps.name, terrainResolveMode(), static_cast<VkFormat>(info.colorFormat),
+                                      static_cast<VkFormat>(info.depthFormat));
     return initializeTechnique(info);
 }
 
@@ -85,6 +92,7 @@ void BasicTerrainBackend::shutdown() {
     mSunPass = {};
     mShadowPass = {};
     mSkyPass = {};
+    mResolvePass = {};
     mFillPipeline = {};
     mWirePipeline = {};
     mLayout = {};
@@ -116,9 +124,16 @@ void BasicTerrainBackend::beginFrame(const backend::FrameInfo& frame) {
     mFrame = frame.gpu;
     mReport = {};
     mReport.frameIndex = frame.frameIndex;
-    mFrameUniforms = mFrame->pushUniform(buildFrameUniforms(frame));
+    // Auto defers only where that pays (mDeferOnAuto). The wireframe stays
+    // forward: a line's fragments take their attributes from the line, not
+    // from the pixel centre's view ray the resolve reconstructs them on.
+    const bool full = frame.look == backend::Look::Full && !frame.wireframe;
+    mDeferTerrain = full && (frame.terrainShading == backend::TerrainShading::Deferred ||
+                             (frame.terrainShading == backend::TerrainShading::Auto && mDeferOnAuto));
+    mFrameUniforms = mFrame->pushUniform(buildFrameUniforms(frame, mDeferTerrain));
     mMainPassOpen = false;
     mMainPassStarted = false;
+    mResolveTerrain = nullptr;
 }
 
 void BasicTerrainBackend::splatTerrain(backend::TerrainHandle handle, std::span<const terrain::CraterSplat> splats) {
@@ -139,7 +154,12 @@ void BasicTerrainBackend::ensureMainPass() {
     if (mMainPassStarted) {
         mFrame->target().resumeRendering(mFrame->cmd());
     } else {
-        const float clear[4] = {mFrameInfo.clearColor.r, mFrameInfo.clearColor.g, mFrameInfo.clearColor.b, 1.0f};
+        // Deferred terrain: alpha 0 marks a pixel the terrain resolve or the
+        // sky still has to shade (forward-shaded geometry writes 1), and
+        // white, the largest distance the terrain stores, one nothing covered.
+        const glm::vec4 color =
+            mDeferTerrain ? glm::vec4(1.0f, 1.0f, 1.0f, 0.0f) : glm::vec4(glm::vec3(mFrameInfo.clearColor), 1.0f);
+        const float clear[4] = {color.r, color.g, color.b, color.a};
         mFrame->target().beginRendering(mFrame->cmd(), clear);
     }
     mMainPassOpen = true;
@@ -163,6 +183,12 @@ void BasicTerrainBackend::drawTerrain(backend::TerrainHandle handle, const backe
     // The characters' shadows on it, from where they stand this frame.
     if (mFrameInfo.look == backend::Look::Full)
         mShadowPass.record(*mFrame, mFrameInfo.shadowCasters, mFrameInfo.shadowRegion, mFrameInfo.sunDirection);
+    // One terrain per frame is resolved (its pixels carry no terrain id);
+    // from a second one on, terrains are shaded forward.
+    if (mDeferTerrain && !mResolveTerrain)
+        mResolveTerrain = terrain;
+    else if (mDeferTerrain && terrain != mResolveTerrain)
+        mFrameUniforms = mFrame->pushUniform(buildFrameUniforms(mFrameInfo, false));
     const auto mode = draw.tessellation.mode;
     if (mode == backend::TerrainMode::LowRes || !capabilities(nullptr).drawsTerrainMode(mode)) {
         drawControlMesh(*terrain, draw.visiblePatches, "terrain.lowres");
@@ -264,10 +290,22 @@ Result<std::vector<uint16_t>> BasicTerrainBackend::readTerrainHeights(backend::T
 
 void BasicTerrainBackend::endFrame() {
     ensureMainPass(); // a frame with nothing drawn still clears the target
-    // The sky last, where nothing else drew (the depth test keeps the rest).
-    if (mFrameInfo.look == backend::Look::Full) mSkyPass.record(*mFrame, mFrameUniforms);
+    const bool full = mFrameInfo.look == backend::Look::Full;
+    const bool resolve = mDeferTerrain && mResolveTerrain;
+    // The sky last, where nothing else drew (the depth test keeps the rest),
+    // unless the compute resolve shades it with the terrain.
+    if (full && !(resolve && mResolvePass.mode() == TerrainResolvePass::Mode::Compute))
+        mSkyPass.record(*mFrame, mFrameUniforms);
     mFrame->target().endRendering(mFrame->cmd());
     mMainPassOpen = false;
+    if (resolve) {
+        GpuTerrain& terrain = *mResolveTerrain;
+        mResolvePass.record(*mFrame, [&](VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout,
+                                         std::span<const VkWriteDescriptorSet> extra) {
+            pushTerrainDescriptors(bindPoint, layout, terrain, extra);
+        });
+        ++mReport.passes;
+    }
     mLastReport = mReport;
     mFrame = nullptr;
 }

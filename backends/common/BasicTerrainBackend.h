@@ -8,12 +8,15 @@
 ///
 /// The frame's main pass (into the host's target) opens lazily on the first
 /// draw, so a backend can run its own off-target passes (R2VB render targets,
-/// stream-out, compute) before it.
+/// stream-out, compute) before it. In the full look the frame's terrain is
+/// shaded after the main pass by the terrain resolve (TerrainResolvePass),
+/// which also draws the sky; with no terrain the sky pass draws it.
 
 #include "CharacterShadowPass.h"
 #include "GpuTerrain.h"
 #include "SkyPass.h"
 #include "TerrainSplatPass.h"
+#include "TerrainResolvePass.h"
 #include "TerrainSunPass.h"
 #include "tessera/backend/Backend.h"
 #include "tessera/gpu/FrameContext.h"
@@ -43,6 +46,9 @@ protected:
     /// capability queries so every backend words missing features the same way.
     static void checkRequirements(const backend::DeviceFeatures* device, backend::BackendCapabilities& caps);
 
+    /// How the full look's terrain resolve runs: a fullscreen fragment pass
+    /// unless the backend has compute (TerrainResolvePass).
+    virtual TerrainResolvePass::Mode terrainResolveMode() const { return TerrainResolvePass::Mode::Fragment; }
     /// Creates the derived backend's own pipelines, after the shared ones.
     virtual Status initializeTechnique(const backend::BackendInitInfo&) { return {}; }
     virtual void shutdownTechnique() {}
@@ -88,7 +94,15 @@ private:
     TerrainSunPass mSunPass;
     CharacterShadowPass mShadowPass;
     SkyPass mSkyPass;
+    TerrainResolvePass mResolvePass;
     std::vector<std::unique_ptr<GpuTerrain>> mTerrains;
+    /// The full look's terrain this frame, shaded by mResolvePass after the
+    /// main pass; a second terrain in the same frame is shaded forward.
+    GpuTerrain* mResolveTerrain = nullptr;
+    /// This frame's terrain is shaded deferred (FrameInfo::terrainShading).
+    bool mDeferTerrain = false;
+    /// TerrainShading::Auto defers: with the compute resolve on a GPU.
+    bool mDeferOnAuto = false;
     bool mMainPassOpen = false;
     bool mMainPassStarted = false;
 };

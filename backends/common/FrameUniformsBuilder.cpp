@@ -16,7 +16,7 @@ constexpr float kFogFalloff = 1.0f / 500.0f;
 constexpr float kFogReferenceHeight = 0.0f;
 } // namespace
 
-shader::FrameUniforms buildFrameUniforms(const backend::FrameInfo& frame) {
+shader::FrameUniforms buildFrameUniforms(const backend::FrameInfo& frame, bool terrainDeferred) {
     shader::FrameUniforms u{};
     u.viewProjection = frame.viewProjection;
     u.view = frame.view;
@@ -25,6 +25,14 @@ shader::FrameUniforms buildFrameUniforms(const backend::FrameInfo& frame) {
     const float w = static_cast<float>(frame.width ? frame.width : 1);
     const float h = static_cast<float>(frame.height ? frame.height : 1);
     u.viewport = glm::vec4(w, h, 1.0f / w, 1.0f / h);
+    // The resolve picks the detail textures' mip from each pixel's footprint
+    // (it has no derivatives in compute): the footprint of a pixel is its
+    // distance times this.
+    const float focal = std::abs(frame.projection[1][1]);
+    const float pixelAngle = focal > 0.0f ? 2.0f / (h * focal) : 0.0f;
+    const float sx = frame.projection[0][0] != 0.0f ? 1.0f / frame.projection[0][0] : 0.0f;
+    const float sy = frame.projection[1][1] != 0.0f ? 1.0f / frame.projection[1][1] : 0.0f;
+    u.terrainResolve = glm::vec4(terrainDeferred && frame.look == backend::Look::Full ? 1.0f : 0.0f, pixelAngle, sx, sy);
     u.sunColor = glm::vec4(kSunRadiance, std::cos(kSunDiscRadians * 0.5f));
     // The characters' shadows: only where the host gave casters (and then the
     // backend draws the mask before the terrain).

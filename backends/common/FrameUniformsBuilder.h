@@ -7,6 +7,9 @@
 
 namespace tessera::backends {
 
-shader::FrameUniforms buildFrameUniforms(const backend::FrameInfo& frame);
+/// `terrainDeferred`: in the full look, the terrain's main-pass fragments
+/// only mark coverage and the terrain resolve pass shades them
+/// (FrameUniforms::terrainResolve.x); false draws a terrain shaded forward.
+shader::FrameUniforms buildFrameUniforms(const backend::FrameInfo& frame, bool terrainDeferred = true);
 
 } // namespace tessera::backends

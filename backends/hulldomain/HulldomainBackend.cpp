@@ -36,6 +36,10 @@ public:
     }
 
 protected:
+    // D3D11-class: the full look's terrain shading runs in compute, on every
+    // core, after the main pass (tile-based deferred shading's place).
+    TerrainResolvePass::Mode terrainResolveMode() const override { return TerrainResolvePass::Mode::Compute; }
+
     Status initializeTechnique(const backend::BackendInitInfo& info) override {
         mFactorPass = HulldomainTessFactorPass(*mDevice, "hulldomain");
         mCharacterSkin = HulldomainCharacterSkinPass(*mDevice);

@@ -50,6 +50,7 @@ Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& opti
 
     session->mWidth = options.width;
     session->mLook = options.look;
+    session->mTerrainShading = options.terrainShading;
     session->mSunDirection = options.sunDirection;
     session->mHeight = options.height;
     gpu::Device* device = session->mSelected->device.get();
@@ -315,6 +316,7 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
         info.shadowRegion = mShadowRegion;
     }
     info.look = mLook;
+    info.terrainShading = mTerrainShading;
     info.sunDirection = mSunDirection;
     const bool capture = mRenderDoc && mCaptureFrame == frameIndex;
     if (capture) mRenderDoc->begin(*mSelected->instance);

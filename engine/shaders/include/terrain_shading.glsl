@@ -69,30 +69,40 @@ const float kDetailFadeEnd = 700.0;
 // A material weighing less than this in a pixel is not sampled.
 const float kDetailMinWeight = 0.02;
 
-vec3 terrainDetailLayer(vec2 uv, int layer) {
-    return texture(detailMaps, vec3(uv, float(layer))).rgb;
+// The mip trilinear filtering would pick for a pixel covering `footprint`
+// metres of ground along its longer axis, worked out from the distance and
+// the slope rather than from derivatives: the compute resolve has none, and
+// forward and deferred shading then filter alike.
+float terrainDetailLod(float footprint) {
+    float texelMetres = kDetailTileMetres / float(textureSize(detailMaps, 0).x);
+    return log2(max(footprint / texelMetres, 1.0));
+}
+
+vec3 terrainDetailLayer(vec2 uv, int layer, float lod) {
+    return textureLod(detailMaps, vec3(uv, float(layer)), lod).rgb;
 }
 
 // Rock seen triplanar: on a cliff the top-down projection would stretch
 // into streaks, so each of the three projections weighs by how squarely the
 // surface faces its axis (sharpened), and faint ones are skipped.
-vec3 terrainDetailRock(vec3 worldPos, vec3 n) {
+vec3 terrainDetailRock(vec3 worldPos, vec3 n, float lod) {
     vec3 w = n * n;
     w *= w;
     w /= (w.x + w.y + w.z);
     vec3 p = worldPos / kDetailTileMetres;
     vec3 sum = vec3(0.0);
     float used = 0.0;
-    if (w.y > kDetailMinWeight) { sum += w.y * terrainDetailLayer(p.xz, TS_DETAIL_ROCK); used += w.y; }
-    if (w.x > kDetailMinWeight) { sum += w.x * terrainDetailLayer(p.zy, TS_DETAIL_ROCK); used += w.x; }
-    if (w.z > kDetailMinWeight) { sum += w.z * terrainDetailLayer(p.xy, TS_DETAIL_ROCK); used += w.z; }
+    if (w.y > kDetailMinWeight) { sum += w.y * terrainDetailLayer(p.xz, TS_DETAIL_ROCK, lod); used += w.y; }
+    if (w.x > kDetailMinWeight) { sum += w.x * terrainDetailLayer(p.zy, TS_DETAIL_ROCK, lod); used += w.x; }
+    if (w.z > kDetailMinWeight) { sum += w.z * terrainDetailLayer(p.xy, TS_DETAIL_ROCK, lod); used += w.z; }
     return sum / max(used, 1e-4);
 }
 
 // The full look's albedo (linear): the plain look's blend of the same four
 // materials by slope, height and noise, each material from its detail
-// texture near the camera and its average colour far away.
-vec3 terrainAlbedoFull(vec3 worldPos, vec3 normal) {
+// texture near the camera and its average colour far away. `dist` is the
+// distance from the camera, `footprint` the ground a pixel covers (metres).
+vec3 terrainAlbedoFull(vec3 worldPos, vec3 normal, float dist, float footprint) {
     float detail = terrainDetail(worldPos);
     float slope = 1.0 - normal.y;
     float heightFraction = worldPos.y / max(terrain.worldSize.z, 1.0);
@@ -105,15 +115,16 @@ vec3 terrainAlbedoFull(vec3 worldPos, vec3 normal) {
     vec3 dirt = terrain.detailAverage[TS_DETAIL_DIRT].rgb;
     vec3 rock = terrain.detailAverage[TS_DETAIL_ROCK].rgb;
     vec3 snow = terrain.detailAverage[TS_DETAIL_SNOW].rgb;
-    float fade = smoothstep(kDetailFadeStart, kDetailFadeEnd, length(worldPos - frame.cameraPosition.xyz));
+    float fade = smoothstep(kDetailFadeStart, kDetailFadeEnd, dist);
     if (fade < 1.0) {
         vec2 uv = worldPos.xz / kDetailTileMetres;
+        float lod = terrainDetailLod(footprint);
         float ground = (1.0 - toRock) * (1.0 - toSnow);
         if ((1.0 - toDirt) * ground > kDetailMinWeight)
-            grass = mix(terrainDetailLayer(uv, TS_DETAIL_GRASS), grass, fade);
-        if (toDirt * ground > kDetailMinWeight) dirt = mix(terrainDetailLayer(uv, TS_DETAIL_DIRT), dirt, fade);
-        if (toRock * (1.0 - toSnow) > kDetailMinWeight) rock = mix(terrainDetailRock(worldPos, normal), rock, fade);
-        if (toSnow > kDetailMinWeight) snow = mix(terrainDetailLayer(uv, TS_DETAIL_SNOW), snow, fade);
+            grass = mix(terrainDetailLayer(uv, TS_DETAIL_GRASS, lod), grass, fade);
+        if (toDirt * ground > kDetailMinWeight) dirt = mix(terrainDetailLayer(uv, TS_DETAIL_DIRT, lod), dirt, fade);
+        if (toRock * (1.0 - toSnow) > kDetailMinWeight) rock = mix(terrainDetailRock(worldPos, normal, lod), rock, fade);
+        if (toSnow > kDetailMinWeight) snow = mix(terrainDetailLayer(uv, TS_DETAIL_SNOW, lod), snow, fade);
     }
     vec3 albedo = mix(mix(mix(grass, dirt, toDirt), rock, toRock), snow, toSnow);
     // The blend's own noise also varies the brightness at the kilometre
@@ -132,15 +143,24 @@ float terrainCharacterLight(vec3 worldPos) {
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
     vec2 edge = min(uv, 1.0 - uv);
     float fade = smoothstep(0.0, 0.1, min(edge.x, edge.y));
-    return 1.0 - TS_CHARACTER_SHADOW_STRENGTH * fade * texture(characterShadowMask, uv).r;
+    return 1.0 - TS_CHARACTER_SHADOW_STRENGTH * fade * textureLod(characterShadowMask, uv, 0.0).r;
 }
 
 float terrainSunVisibility(vec3 worldPos) {
-    return texture(sunVisibilityMap, terrainTexcoord(worldPos.xz)).r * terrainCharacterLight(worldPos);
+    return textureLod(sunVisibilityMap, terrainTexcoord(worldPos.xz), 0.0).r * terrainCharacterLight(worldPos);
 }
 
+// The full look. Runs in the resolve pass (terrain_resolve.glsl) for the
+// frame's terrain and forward only for a second terrain in the same frame,
+// so it uses no derivatives.
 vec3 shadeTerrainFull(vec3 worldPos, vec3 normal) {
-    vec3 albedo = terrainAlbedoFull(worldPos, normal);
+    vec3 toPoint = worldPos - frame.cameraPosition.xyz;
+    float dist = length(toPoint);
+    // A pixel's footprint grows with distance and stretches as the ground
+    // turns away from the view (trilinear filtering follows the longer axis).
+    float facing = abs(dot(normal, toPoint)) / max(dist, 1e-4);
+    float footprint = dist * frame.terrainResolve.y / max(facing, 0.05);
+    vec3 albedo = terrainAlbedoFull(worldPos, normal, dist, footprint);
     vec3 sun = tsSunDirection();
     float diffuse = max(dot(normal, sun), 0.0) * terrainSunVisibility(worldPos);
     vec3 color = albedo * (frame.sunColor.rgb * diffuse + tsSkyAmbient(normal));

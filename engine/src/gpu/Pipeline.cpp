@@ -54,7 +54,7 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) : mDevice(&
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     depth.depthTestEnable = desc.depthTest;
     depth.depthWriteEnable = desc.depthWrite;
-    depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+    depth.depthCompareOp = desc.depthCompare;
 
     std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
     for (auto& b : blends) {

@@ -9,7 +9,9 @@ RenderTarget::RenderTarget(Device& device, uint32_t width, uint32_t height) {
     color.width = width;
     color.height = height;
     color.format = kColorFormat;
-    color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    // Storage: the compute terrain resolve (TerrainResolvePass) shades into it.
+    color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                  VK_IMAGE_USAGE_STORAGE_BIT;
     color.name = "target.color";
     mColor = Image(device, color);
 

@@ -20,6 +20,16 @@ enum class Look : uint32_t {
     Full = 1,  ///< analytic sky, aerial-perspective fog, sun shadows, filmic tone mapping, sRGB encode
 };
 
+/// Where the full look shades the terrain (docs/LOOKS.md, "Deferred terrain
+/// shading"): in its own fragments in the main pass, or once per pixel after
+/// it, from the distance its fragments store (the terrain resolve: compute
+/// on backends with compute, a fullscreen pass on the others).
+enum class TerrainShading : uint32_t {
+    Auto = 0,     ///< deferred where the resolve runs in compute on a GPU, else forward
+    Forward = 1,  ///< every terrain fragment shades itself
+    Deferred = 2, ///< the terrain resolve shades each terrain pixel once
+};
+
 struct FrameInfo {
     uint64_t frameIndex = 0;
     double timeSeconds = 0.0;
@@ -33,6 +43,7 @@ struct FrameInfo {
     uint32_t height = 0;
     bool wireframe = false;
     Look look = Look::Full;
+    TerrainShading terrainShading = TerrainShading::Auto; ///< with the full look
     /// Characters' shadows on the terrain: the feet (xyz) and height (w) in
     /// metres of each character standing in `shadowRegion`, the square of
     /// ground the backend's shadow mask covers (x, y: its min corner in

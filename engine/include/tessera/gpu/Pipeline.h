@@ -33,6 +33,7 @@ struct GraphicsPipelineDesc {
     VkFrontFace frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     bool depthTest = true;
     bool depthWrite = true;
+    VkCompareOp depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
     /// Straight alpha blending (src alpha, one minus src alpha) on every
     /// colour target: overlays drawn over the frame.
     bool alphaBlend = false;

@@ -15,8 +15,12 @@ struct FrameUniforms {
     vec4 look;           // x: TS_LOOK_*, y: exposure, z: fog height falloff (1/m), w: fog density at the camera (1/m)
     vec4 sunColor;       // rgb: sun radiance above the atmosphere (linear), a: cosine of the sun disc's radius
     vec4 characterShadow; // the characters' shadow mask: xy: world XZ of its min corner, z: 1/side (1/m), w: 1 when drawn this frame
+    vec4 terrainResolve;  // x: 1 when the terrain's full-look shading is deferred to the resolve pass
+                          //    (its main-pass fragments store their distance), y: metres a pixel spans per
+                          //    metre of distance (2 / (height * |projection[1][1]|)), zw: 1 / projection[0][0],
+                          //    1 / projection[1][1] (a view ray's slopes per unit of NDC)
 };
-TS_CHECK_SIZE(FrameUniforms, 240)
+TS_CHECK_SIZE(FrameUniforms, 256)
 
 TS_NAMESPACE_END
 

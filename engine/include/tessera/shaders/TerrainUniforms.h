@@ -41,6 +41,14 @@ TS_NAMESPACE_END
 // The characters' shadow mask (CharacterShadow.h), R8 darkness over the
 // square of ground FrameUniforms::characterShadow places.
 #define TS_BINDING_CHARACTER_SHADOW 26
+// The terrain resolve pass (terrain_resolve.glsl): what the main pass left
+// in the target, as a copy to sample (fragment resolve) or the target itself
+// as a storage image (compute resolve).
+#define TS_BINDING_RESOLVE_SOURCE 27
+#define TS_BINDING_RESOLVE_TARGET 28
+// The terrain's main-pass fragments store their distance from the camera in
+// the target's RGB as 24-bit fixed point over this range (metres): 4 mm steps.
+#define TS_RESOLVE_MAX_DISTANCE 65536.0
 #define TS_DETAIL_LAYERS 4
 
 #endif

@@ -59,6 +59,8 @@ struct Options {
     /// --look plain|full: today's shading or the full look (sky, fog, shadows,
     /// tone mapping; docs/LOOKS.md). The terrain benchmark measures both.
     backend::Look look = backend::Look::Full;
+    /// --terrain-shading auto|forward|deferred: where the full look shades the terrain.
+    backend::TerrainShading terrainShading = backend::TerrainShading::Auto;
     glm::vec3 sunDirection{0.4f, 0.8f, 0.3f}; ///< --sun: towards the sun (normalised by the backend)
     bool benchBothLooks = false;        ///< --look both: --bench terrain measures every row in both looks
     uint32_t width = 1280;

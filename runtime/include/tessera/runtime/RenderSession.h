@@ -168,6 +168,7 @@ private:
     std::vector<backend::SubdivHandle> mSubdivs;
     bool mTerrainVisible = true;
     backend::Look mLook = backend::Look::Full;
+    backend::TerrainShading mTerrainShading = backend::TerrainShading::Auto;
     glm::vec3 mSunDirection{0.4f, 0.8f, 0.3f};
     uint32_t mWidth = 0;
     uint32_t mHeight = 0;
