@@ -5,7 +5,6 @@
 // some (NVIDIA's H100) run fragment shaders on only a few, so there this
 // costs a fraction of fullscreen passes.
 #extension GL_GOOGLE_include_directive : require
-#extension GL_KHR_shader_subgroup_vote : require
 #include "terrain_resolve.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -19,17 +18,5 @@ void main() {
     uint steps = tsResolveSteps(stored.rgb);
     bool sky = steps == kTsResolveSky;
     vec3 dir = tsResolveViewRay(pixel);
-    // Branch on what the subgroup as a whole needs: a CPU rasterizer
-    // (lavapipe) runs a branch its SIMD lanes disagree on for all of them,
-    // masked, so without the vote every pixel would pay for both.
-    vec4 color = vec4(0.0);
-    if (subgroupAny(!sky)) {
-        vec4 terrainColor = tsResolveTerrain(dir, steps);
-        if (!sky) color = terrainColor;
-    }
-    if (subgroupAny(sky)) {
-        vec4 skyColor = tsResolveSky(dir);
-        if (sky) color = skyColor;
-    }
-    imageStore(target, pixel, color);
+    imageStore(target, pixel, sky ? tsResolveSky(dir) : tsResolveTerrain(dir, steps));
 }
