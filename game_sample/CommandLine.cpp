@@ -3,6 +3,7 @@
 #include "DemoFlags.h"
 #include "FlagValues.h"
 
+#include "tessera/cli/Validators.h"
 #include "tessera/lod/LodPolicy.h"
 #include "tessera/scene/CameraPose.h"
 
@@ -135,7 +136,7 @@ Result<Options> parseCommandLine(const std::vector<std::string>& args) {
     const float lodNear = o.lodNear.value_or(lod::LodPolicy{}.nearPixels);
     const float lodFar = o.lodFar.value_or(lod::LodPolicy{}.farPixels);
     if (lodFar > lodNear)
-        return fail("--lod-far ", formatNumber(lodFar), " is above --lod-near ", formatNumber(lodNear),
+        return fail("--lod-far ", cli::formatNumber(lodFar), " is above --lod-near ", cli::formatNumber(lodNear),
                     ": the far threshold must be the smaller");
     if ((!o.models.empty() || !o.surfaces.empty()) && !o.sceneGiven) o.scene = "characters";
     const bool crowdFlags = !o.agents.empty() || crowdDrawGiven;

@@ -89,11 +89,15 @@ Status PtexTopology::linkEdges(const ObjShape& shape) {
     }
     // One face per direction: a second one means an edge of three faces or
     // two faces wound the same way, which OpenSubdiv refuses too.
-    for (const auto& [key, mine] : parts)
-        if (std::any_of(mine.begin(), mine.end(), [&](const EdgePart& p) { return p.face != mine[0].face; }))
+    for (const auto& [key, mine] : parts) {
+        // A named copy of the binding: lambdas capture structured bindings
+        // only from C++20 compilers newer than Debian's clang 14.
+        const uint32_t firstFace = mine[0].face;
+        if (std::any_of(mine.begin(), mine.end(), [firstFace](const EdgePart& p) { return p.face != firstFace; }))
             return fail(shape.name, ": the edge between vertices ", std::to_string(key >> 32), " and ",
                         std::to_string(uint32_t(key)),
                         " is walked the same way by two faces (non-manifold or inconsistent winding)");
+    }
     for (const auto& [key, mine] : parts) {
         const uint32_t from = uint32_t(key >> 32), to = uint32_t(key);
         const auto opposite = parts.find(directedKey(to, from));
