@@ -130,8 +130,8 @@ Status InstancedCrowd::writeTiers(const std::string& path, const std::string& ba
     }
     json.endObject();
     std::ofstream out(path, std::ios::binary);
-    out << json.str();
-    if (!out) return Error{path + ": cannot write the crowd tiers"};
+    // Flushed before the check: a full disk shows only when the buffer goes out.
+    if (!(out << json.str()) || !out.flush()) return Error{path + ": cannot write the crowd tiers"};
     return {};
 }
 

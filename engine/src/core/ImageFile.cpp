@@ -18,8 +18,10 @@ Status writePng(const std::filesystem::path& path, const PngPixels& pixels) {
     // fclose flushes; a full disk often shows up only here.
     ioError |= std::fclose(file) != 0;
     if (!ioError) return {};
+    // A half-written PNG is removed, but only a regular file: the path may be
+    // a device (/dev/full) or a pipe that is not ours to delete.
     std::error_code ignored;
-    std::filesystem::remove(path, ignored);
+    if (std::filesystem::is_regular_file(path, ignored)) std::filesystem::remove(path, ignored);
     return fail(name, ": write error (disk full?)");
 }
 

@@ -123,7 +123,8 @@ Status writeCageTiles(const std::filesystem::path& file, const CageTiles& tiles)
     const std::vector<uint8_t> bytes = encodeCageTiles(tiles);
     std::ofstream out(file, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    if (!out) return fail(file.string(), ": cannot write the tile file");
+    // Flushed before the check: a full disk shows only when the buffer goes out.
+    if (!out || !out.flush()) return fail(file.string(), ": cannot write the tile file");
     return {};
 }
 
