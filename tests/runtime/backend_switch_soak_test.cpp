@@ -4,6 +4,7 @@
 #include "tessera/runtime/BackendSelection.h"
 #include "tessera/runtime/SceneRun.h"
 #include "tessera/profiler/Profiler.h"
+#include "ProcessMemory.h"
 
 #include <gtest/gtest.h>
 
@@ -11,19 +12,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-#include <malloc.h>
 #include <vector>
 
 namespace tessera::runtime {
 namespace {
 
-/// Heap bytes in use (malloc's own count: allocated and not freed, whatever
-/// the allocator keeps mapped), the measure of a leak; the resident set
-/// also moves with fragmentation and the driver's caches.
-uint64_t heapBytes() {
-    const struct mallinfo2 info = mallinfo2();
-    return uint64_t(info.uordblks) + uint64_t(info.hblkhd);
-}
+using test::heapBytes;
 
 uint32_t soakSwitches() {
     // TESSERA_SOAK_SWITCHES lets a longer soak run by hand; CI runs 1,000.

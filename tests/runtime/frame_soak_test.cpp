@@ -6,33 +6,21 @@
 #include "tessera/profiler/Profiler.h"
 #include "tessera/runtime/BackendSelection.h"
 #include "tessera/runtime/SceneRun.h"
+#include "ProcessMemory.h"
 
 #include <gtest/gtest.h>
-
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <malloc.h>
 #include <string>
 
 namespace tessera::runtime {
 namespace {
 
-uint64_t heapBytes() {
-    const struct mallinfo2 info = mallinfo2();
-    return uint64_t(info.uordblks) + uint64_t(info.hblkhd);
-}
-
-uint64_t residentBytes() {
-    std::ifstream statm("/proc/self/statm");
-    uint64_t size = 0, resident = 0;
-    statm >> size >> resident;
-    return resident * uint64_t(sysconf(_SC_PAGESIZE));
-}
+using test::heapBytes;
+using test::residentBytes;
 
 uint32_t soakFrames(uint32_t shortRun) {
     if (const char* env = std::getenv("TESSERA_SOAK_FRAMES")) return std::max(40u, uint32_t(std::strtoul(env, nullptr, 10)));
