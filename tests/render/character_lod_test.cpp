@@ -18,12 +18,7 @@ using namespace tessera::test;
 namespace {
 
 void expectOneLineError(const std::vector<std::string>& args, const std::string& text) {
-    SCOPED_TRACE(demoCommandLine(args));
-    const ProcessResult run = runDemo(args);
-    EXPECT_EQ(run.exitCode, 2) << run.output;
-    const auto errors = errorLines(run.output);
-    ASSERT_EQ(errors.size(), 1u) << run.output;
-    EXPECT_NE(errors.front().find(text), std::string::npos) << errors.front();
+    tessera::test::expectOneLineError(args, 2, text);
 }
 
 /// `model` alone, the camera `distance` metres from it, at 1280x720 on

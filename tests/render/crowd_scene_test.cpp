@@ -15,21 +15,6 @@
 
 using namespace tessera::test;
 
-namespace {
-
-/// A failed run: exit code `code` and exactly one error line, naming `text`.
-void expectOneLineError(const std::vector<std::string>& args, int code, const std::string& text) {
-    SCOPED_TRACE(demoCommandLine(args));
-    const ProcessResult run = runDemo(args);
-    EXPECT_EQ(run.exitCode, code) << run.output;
-    const auto errors = errorLines(run.output);
-    ASSERT_EQ(errors.size(), 1u) << run.output;
-    EXPECT_NE(errors.front().find(text), std::string::npos) << errors.front();
-    std::cout << "[crowd] " << errors.front() << "\n";
-}
-
-} // namespace
-
 // Each GPU backend draws the nearest agents as creatures: alone on magenta,
 // so every pixel that is not magenta is a creature's.
 TEST(CrowdDemoScene, CreaturesDrawnOnEveryGpuBackend) {

@@ -78,10 +78,5 @@ TEST(DeferredTerrainShadingWireframe, StaysForward) {
 }
 
 TEST(DeferredTerrainShadingFlag, RejectsUnknownValues) {
-    const std::vector<std::string> args = {"--backend", "null", "--terrain-shading", "sideways"};
-    const ProcessResult run = runDemo(args);
-    EXPECT_EQ(run.exitCode, 2) << run.output;
-    const auto errors = errorLines(run.output);
-    ASSERT_EQ(errors.size(), 1u) << run.output;
-    EXPECT_NE(errors.front().find("--terrain-shading"), std::string::npos) << errors.front();
+    expectOneLineError({"--backend", "null", "--terrain-shading", "sideways"}, 2, "--terrain-shading");
 }

@@ -9,6 +9,8 @@
 
 #include "tessera/core/ImageFile.h"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -46,6 +48,19 @@ inline std::string demoCommandLine(const std::vector<std::string>& args) {
         text += shellQuote(a);
     }
     return text;
+}
+
+/// A failed run of the demo with `args`: exit code `code` and exactly one
+/// error line, which names `text`; returns that line (empty on failure).
+inline std::string expectOneLineError(const std::vector<std::string>& args, int code, const std::string& text) {
+    SCOPED_TRACE(demoCommandLine(args));
+    const ProcessResult run = runDemo(args);
+    EXPECT_EQ(run.exitCode, code) << run.output;
+    const auto errors = errorLines(run.output);
+    EXPECT_EQ(errors.size(), 1u) << run.output;
+    if (errors.size() != 1u) return {};
+    EXPECT_NE(errors.front().find(text), std::string::npos) << errors.front();
+    return errors.front();
 }
 
 /// True when the demo counted no validation messages (it prints the count
