@@ -96,6 +96,7 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
     if (given("--lod-edge")) o.lodEdge = t.lodEdge;
     if (given("--lod-far-triangles")) o.lodFarTriangles = t.lodFarTriangles;
     if (given("--renderdoc")) o.renderdocFrame = t.renderdocFrame;
+    if (given("--device-memory-cap")) o.deviceMemoryCap = t.deviceMemoryCap << 20;
     o.sceneGiven = given("--scene");
     o.sizeGiven = given("--width") || given("--height");
     o.warmupGiven = given("--warmup");

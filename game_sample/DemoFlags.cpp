@@ -40,6 +40,9 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
     repeated("--plugin-dir", o.pluginDirs, "DIR", "also search DIR for backend plugins (repeatable)");
     flag("--validation", o.validation,
          "enable the Khronos validation layer; print and count every message, fail at exit if there were any");
+    count("--device-memory-cap", t.deviceMemoryCap, 1, 1048576, "MIB",
+          "simulate a device with only MIB MiB of memory for Tessera: the allocation that would go past it ends the "
+          "run with a message naming it, everything released, exit 1 (docs/RELIABILITY.md)");
 
     group("Scene");
     choice("--scene", o.scene, {"terrain", "characters", "crowd"}, "NAME",

@@ -64,6 +64,8 @@ Result<std::unique_ptr<SelectedBackend>> selectBackend(const Options& options) {
             if (!device) return device.error();
             selected->instance = std::move(instance.value());
             selected->device = std::move(device.value());
+            selected->device->setMemoryCap(options.deviceMemoryCap);
+            if (options.failAllocation) selected->device->failAllocation(*options.failAllocation);
         }
         if (caps.requiresGpu) caps = candidate->capabilities(&selected->device->features());
         if (!caps.supported()) {
@@ -73,6 +75,8 @@ Result<std::unique_ptr<SelectedBackend>> selectBackend(const Options& options) {
             log::info(why + "; trying the next backend");
             continue;
         }
+        if (!caps.requiresGpu && options.deviceMemoryCap)
+            log::warning("--device-memory-cap: backend " + name + " allocates no device memory; the cap does nothing");
         selected->backend = std::move(candidate);
         selected->capabilities = caps;
         return selected;

@@ -86,7 +86,16 @@ Status RenderSession::initializeBackend(bool alreadyInitialized) {
         if (device) init.features = device->features();
         init.colorFormat = static_cast<uint32_t>(gpu::RenderTarget::kColorFormat);
         init.depthFormat = static_cast<uint32_t>(gpu::RenderTarget::kDepthFormat);
-        if (auto ok = backend.initialize(init); !ok) return ok.error();
+        if (auto ok = backend.initialize(init); !ok) {
+            // What initialize made before it failed is released now, not
+            // when the backend object goes (the contract: shutdown releases
+            // whatever initialize made; a failed switch drops the object).
+            backend.shutdown();
+            // Named for the user unless the backend's message already says which.
+            const std::string name = "backend " + mSelected->capabilities.name;
+            if (ok.error().message.rfind(name, 0) == 0) return ok.error();
+            return fail(name, ": ", ok.error().message);
+        }
     }
     // The upload copies the CPU height field as it is now, craters included,
     // so the splats still queued (--splat) must not be applied a second time.

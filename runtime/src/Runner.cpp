@@ -15,6 +15,7 @@
 #include "WindowController.h"
 #include "tessera/core/ImageFile.h"
 #include "tessera/core/Log.h"
+#include "tessera/gpu/OutOfDeviceMemory.h"
 #include "tessera/profiler/CpuScope.h"
 #include "tessera/profiler/Profiler.h"
 
@@ -103,7 +104,7 @@ int execute(const Options& options) {
         return 0;
     }
     int code = 0;
-    {
+    try {
         Status ran = options.bench.empty()           ? runFlythrough(options)
                      : options.bench == "characters" ? runCharacterBenchmark(options)
                      : options.bench == "crowd-sim"  ? runCrowdBenchmark(options)
@@ -114,6 +115,14 @@ int execute(const Options& options) {
             log::error(ran.error().message);
             code = 1;
         }
+    } catch (const gpu::OutOfDeviceMemory& e) {
+        // Thrown by whichever allocation did not fit, at load time or in a
+        // frame; by the time it lands here the run's objects have released
+        // their GPU resources and the device is gone (gpu/OutOfDeviceMemory.h).
+        log::error(std::string(e.what()) + "; " +
+                   (e.capBytes() ? "raise --device-memory-cap or ask for less (--agents, --width/--height, --model, a smaller --heightmap)"
+                                 : "ask for less (--agents, --width/--height, --model, a smaller --heightmap) or pick another --device"));
+        code = 1;
     }
     if (options.validation) {
         // Printed after every Vulkan object is gone, so messages from

@@ -61,6 +61,8 @@ TEST(DemoCli, BadTerrainFlagsFailClearly) {
     expectUsageError({"--splat", "a,b,c"}, "--splat expects x,z,radius[,depth]");
     expectUsageError({"--bench", "foo"}, "--bench expects terrain, characters, crowd, crowd-sim or subdiv, got \"foo\"");
     expectUsageError({"--meteors", "-1"}, "--meteors expects a whole number");
+    expectUsageError({"--device-memory-cap", "0"}, "--device-memory-cap expects a whole number from 1");
+    expectUsageError({"--device-memory-cap", "lots"}, "--device-memory-cap expects a whole number");
 }
 
 TEST(DemoCli, BadHeightMapNamesTheFile) {

@@ -78,3 +78,22 @@ TEST(OutputFaults, TruncatedContentNamesTheFile) {
                    "--height", "64", "--frames", "1"},
                   creature);
 }
+
+// Out of device memory as a user meets it: --device-memory-cap smaller than
+// the scene. One line naming the allocation and the cap, exit 1, and the
+// validation layer's object tracking clean (every object released as the
+// error unwound). The walk over every allocation is in
+// tests/runtime/device_memory_exhaustion_test.cpp.
+TEST(OutputFaults, ADeviceTooSmallEndsTheRunCleanly) {
+    for (const char* backend : {"hulldomain", "r2vb", "streamout"}) {
+        expectFailure({"--backend", backend, "--scene", "terrain", "--width", "64", "--height", "64", "--frames", "2",
+                       "--device-memory-cap", "16"},
+                      "out of device memory: terrain.heightMap needs 8.00 MiB");
+    }
+    // Enough for the terrain but not for a crowd: it fails later, in the crowd's upload.
+    const std::string line = expectOneLineError(
+        {"--backend", "hulldomain", "--agents", "64", "--width", "64", "--height", "64", "--frames", "2",
+         "--device-memory-cap", "64", "--validation"},
+        1, "of the 64.00 MiB cap (--device-memory-cap) in use");
+    EXPECT_NE(line.find("raise --device-memory-cap"), std::string::npos) << line;
+}

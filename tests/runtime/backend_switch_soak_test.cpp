@@ -5,6 +5,7 @@
 #include "tessera/runtime/SceneRun.h"
 #include "tessera/profiler/Profiler.h"
 #include "ProcessMemory.h"
+#include "SceneOptions.h"
 
 #include <gtest/gtest.h>
 
@@ -26,22 +27,12 @@ uint32_t soakSwitches() {
 }
 
 Options soakOptions(const std::string& backend, const std::string& scene) {
-    Options options;
-    options.backend = backend;
-    options.pluginDirs = {TESSERA_PLUGIN_DIR};
-    options.contentDir = TESSERA_CONTENT_DIR;
-    options.validation = true;
     // The crowd scene exercises every kind of GPU object a backend makes
     // (terrain, characters, the instanced crowd), the terrain scene the
     // terrain's; small, so the soak is about the switches and not the
     // rasterizer.
-    options.scene = scene;
-    options.sceneGiven = true;
-    options.agents = {64};
-    options.meteors = 1;
-    options.meteorsGiven = true;
-    options.width = 96;
-    options.height = 64;
+    Options options = test::smallSceneOptions(backend, scene);
+    options.validation = true;
     return options;
 }
 

@@ -7,6 +7,7 @@
 #include "tessera/runtime/BackendSelection.h"
 #include "tessera/runtime/SceneRun.h"
 #include "ProcessMemory.h"
+#include "SceneOptions.h"
 
 #include <gtest/gtest.h>
 
@@ -40,18 +41,9 @@ Sample sample(SceneRun& run) {
 /// 250 frames; checks memory after the first tenth (warm-up) against the end.
 void soak(const std::string& backend, uint32_t agents, uint32_t frames) {
     profiler::Profiler::global().setEnabled(false);
-    Options options;
-    options.backend = backend;
-    options.pluginDirs = {TESSERA_PLUGIN_DIR};
-    options.contentDir = TESSERA_CONTENT_DIR;
-    options.validation = backend != "null";
-    options.scene = "crowd";
-    options.sceneGiven = true;
+    Options options = test::smallSceneOptions(backend, "crowd");
     options.agents = {agents};
     options.meteors = std::max(1u, frames / 250);
-    options.meteorsGiven = true;
-    options.width = 96;
-    options.height = 64;
     auto created = SceneRun::create(options, frames);
     ASSERT_TRUE(created) << created.error().message;
     SceneRun& run = *created.value();

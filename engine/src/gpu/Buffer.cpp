@@ -26,7 +26,12 @@ Buffer::Buffer(Device& device, VkDeviceSize size, VkBufferUsageFlags usage, Memo
     if (memory == MemoryUsage::CpuToGpu) flags = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     if (memory == MemoryUsage::GpuToCpu)
         flags = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT | VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
-    mMemory = device.allocate(req, flags, name);
+    try {
+        mMemory = device.allocate(req, flags, name);
+    } catch (...) {
+        reset(); // the buffer made above; the destructor does not run for a constructor that throws
+        throw;
+    }
     mAllocationSize = req.size;
     TESSERA_VK_CHECK(vkBindBufferMemory(device.handle(), mBuffer, mMemory, 0));
     if (memory != MemoryUsage::GpuOnly) TESSERA_VK_CHECK(vkMapMemory(device.handle(), mMemory, 0, VK_WHOLE_SIZE, 0, &mMapped));

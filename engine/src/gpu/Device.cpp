@@ -1,8 +1,10 @@
 #include "tessera/gpu/Device.h"
 
+#include "tessera/gpu/OutOfDeviceMemory.h"
 #include "tessera/gpu/VulkanCheck.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 
 namespace tessera::gpu {
@@ -16,12 +18,20 @@ bool hasExtension(VkPhysicalDevice device, const char* name) {
     return std::any_of(exts.begin(), exts.end(), [&](const auto& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
+std::string mebibytes(uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f MiB", double(bytes) / (1024.0 * 1024.0));
+    return text;
+}
+
 template <class Fn>
 Fn load(VkDevice device, const char* name) {
     return reinterpret_cast<Fn>(vkGetDeviceProcAddr(device, name));
 }
 
 } // namespace
+
+OutOfDeviceMemory::~OutOfDeviceMemory() = default;
 
 Result<std::unique_ptr<Device>> Device::create(Instance& instance, const PhysicalDeviceInfo& physical) {
     std::unique_ptr<Device> device(new Device());
@@ -176,13 +186,33 @@ VkDeviceMemory Device::allocate(const VkMemoryRequirements& req, VkMemoryPropert
     if (type == UINT32_MAX && (flags & VK_MEMORY_PROPERTY_HOST_CACHED_BIT))
         type = findMemoryType(req.memoryTypeBits, flags & ~VK_MEMORY_PROPERTY_HOST_CACHED_BIT);
     if (type == UINT32_MAX) fatalVulkanError(("no memory type for " + name).c_str(), VK_ERROR_OUT_OF_DEVICE_MEMORY);
+    const uint64_t inUse = mAllocatedBytes.load();
+    if (mAllocationCount++ == mFailingAllocation)
+        throw OutOfDeviceMemory("out of device memory: " + name + " needs " + mebibytes(req.size) + " with " +
+                                    mebibytes(inUse) + " in use on " + mPhysical.features.deviceName +
+                                    " (allocation " + std::to_string(mFailingAllocation) + " failed on purpose)",
+                                name, req.size, inUse, mMemoryCap);
+    if (mMemoryCap && inUse + req.size > mMemoryCap)
+        throw OutOfDeviceMemory("out of device memory: " + name + " needs " + mebibytes(req.size) + " with " +
+                                    mebibytes(inUse) + " of the " + mebibytes(mMemoryCap) +
+                                    " cap (--device-memory-cap) in use on " + mPhysical.features.deviceName,
+                                name, req.size, inUse, mMemoryCap);
     VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     info.allocationSize = req.size;
     info.memoryTypeIndex = type;
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    TESSERA_VK_CHECK(vkAllocateMemory(mDevice, &info, nullptr, &memory));
+    const VkResult result = vkAllocateMemory(mDevice, &info, nullptr, &memory);
+    if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
+        throw OutOfDeviceMemory("out of device memory: " + name + " needs " + mebibytes(req.size) + " with " +
+                                    mebibytes(inUse) + " in use on " + mPhysical.features.deviceName + " (" +
+                                    resultName(result) + ")",
+                                name, req.size, inUse, mMemoryCap);
+    TESSERA_VK_CHECK(result);
     setName(VK_OBJECT_TYPE_DEVICE_MEMORY, memory, name + ".memory");
-    mAllocatedBytes += req.size;
+    const uint64_t now = (mAllocatedBytes += req.size);
+    uint64_t peak = mPeakBytes.load();
+    while (now > peak && !mPeakBytes.compare_exchange_weak(peak, now)) {
+    }
     return memory;
 }
 

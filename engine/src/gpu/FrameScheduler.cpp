@@ -19,6 +19,12 @@ constexpr VkDeviceSize kUniformRingBytes = 1u << 20;
 FrameScheduler::FrameScheduler(Device& device, profiler::Profiler& profiler, RenderTarget& target)
     : mDevice(device), mProfiler(profiler), mTarget(&target), mGpuProfiler(device, profiler, kFramesInFlight) {
     static_assert(kFramesInFlight == 2, "mSlots is sized for two frames in flight");
+    // The uniform rings first: they are the allocations that can run out of
+    // device memory (OutOfDeviceMemory), and a constructor that throws never
+    // runs the destructor, so no pool or fence may exist yet when they do.
+    for (uint32_t i = 0; i < mSlots.size(); ++i)
+        mSlots[i].uniforms = Buffer(device, kUniformRingBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                    MemoryUsage::CpuToGpu, "frame" + std::to_string(i) + ".uniformRing");
     for (uint32_t i = 0; i < mSlots.size(); ++i) {
         Slot& s = mSlots[i];
         const std::string prefix = "frame" + std::to_string(i);
@@ -35,8 +41,6 @@ FrameScheduler::FrameScheduler(Device& device, profiler::Profiler& profiler, Ren
         VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
         TESSERA_VK_CHECK(vkCreateFence(device.handle(), &fenceInfo, nullptr, &s.fence));
         device.setName(VK_OBJECT_TYPE_FENCE, s.fence, prefix + ".fence");
-        s.uniforms = Buffer(device, kUniformRingBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUsage::CpuToGpu,
-                            prefix + ".uniformRing");
     }
 }
 

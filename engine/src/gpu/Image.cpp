@@ -36,7 +36,12 @@ Image::Image(Device& device, const ImageDesc& desc) : mDevice(&device), mDesc(de
 
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(device.handle(), mImage, &req);
-    mMemory = device.allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, desc.name);
+    try {
+        mMemory = device.allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, desc.name);
+    } catch (...) {
+        reset(); // the image made above; the destructor does not run for a constructor that throws
+        throw;
+    }
     mAllocationSize = req.size;
     TESSERA_VK_CHECK(vkBindImageMemory(device.handle(), mImage, mMemory, 0));
 

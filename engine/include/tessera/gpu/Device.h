@@ -78,10 +78,28 @@ public:
     /// UINT32_MAX when none.
     uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required) const;
     /// Allocates device memory and accounts for it in allocatedBytes().
+    /// Throws OutOfDeviceMemory when the driver refuses (out of device or
+    /// host memory) or when the allocation would take allocatedBytes() past
+    /// memoryCap(); the message names `name`, the size and the memory in use.
     VkDeviceMemory allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags flags, const std::string& name);
     void free(VkDeviceMemory memory, VkDeviceSize size);
     /// Device memory currently allocated through this device.
     uint64_t allocatedBytes() const { return mAllocatedBytes.load(); }
+    /// The most allocatedBytes() has been since the device was created.
+    uint64_t peakAllocatedBytes() const { return mPeakBytes.load(); }
+    /// Simulates a device with only `bytes` of memory for Tessera (0: no cap,
+    /// the default): an allocation that would go past it throws
+    /// OutOfDeviceMemory as a real exhaustion would. For the demo's
+    /// --device-memory-cap and the exhaustion tests.
+    void setMemoryCap(uint64_t bytes) { mMemoryCap = bytes; }
+    uint64_t memoryCap() const { return mMemoryCap; }
+    /// Allocations made since the device was created.
+    uint64_t allocationCount() const { return mAllocationCount; }
+    /// Fault injection: allocation number `index` (counting from 0 since the
+    /// device was created) throws OutOfDeviceMemory as if the driver had
+    /// refused it. A cap fails only allocations that raise the memory in use
+    /// to a new height; this reaches every one, for the exhaustion tests.
+    void failAllocation(uint64_t index) { mFailingAllocation = index; }
 
     /// Records `record` into a one-shot command buffer, submits it and waits.
     /// For load-time uploads only; per-frame work goes through FrameContext.
@@ -110,6 +128,10 @@ private:
     VkCommandPool mImmediatePool = VK_NULL_HANDLE;
     DeviceFunctions mFn;
     std::atomic<uint64_t> mAllocatedBytes{0};
+    std::atomic<uint64_t> mPeakBytes{0};
+    uint64_t mMemoryCap = 0;
+    uint64_t mAllocationCount = 0;
+    uint64_t mFailingAllocation = UINT64_MAX;
     uint32_t mCurrentSlot = 0;
     std::vector<std::function<void()>> mDeferred[kFramesInFlight];
 };

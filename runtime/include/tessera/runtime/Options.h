@@ -50,6 +50,13 @@ struct Options {
     bool listDevices = false;
     bool help = false;
     bool validation = false;
+    /// --device-memory-cap: bytes of device memory the run may allocate (0:
+    /// no cap); past it an allocation throws gpu::OutOfDeviceMemory as a real
+    /// exhaustion would (gpu::Device::setMemoryCap).
+    uint64_t deviceMemoryCap = 0;
+    /// Fault injection for the exhaustion tests (gpu::Device::failAllocation):
+    /// the device allocation with this index fails. No flag sets it.
+    std::optional<uint64_t> failAllocation;
     bool window = false;
     /// --overlay / --no-overlay: the Dear ImGui overlay of statistics and
     /// controls; unset: with --window only. Headless, --overlay draws it into
