@@ -97,6 +97,11 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
     if (given("--lod-far-triangles")) o.lodFarTriangles = t.lodFarTriangles;
     if (given("--renderdoc")) o.renderdocFrame = t.renderdocFrame;
     if (given("--device-memory-cap")) o.deviceMemoryCap = t.deviceMemoryCap << 20;
+    if (given("--hide-features")) {
+        auto mask = backend::parseFeatureMask(t.hideFeatures);
+        if (!mask) return fail("--hide-features: ", mask.error().message);
+        o.hiddenFeatures = mask.value();
+    }
     o.sceneGiven = given("--scene");
     o.sizeGiven = given("--width") || given("--height");
     o.warmupGiven = given("--warmup");

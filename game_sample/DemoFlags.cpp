@@ -43,6 +43,10 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
     count("--device-memory-cap", t.deviceMemoryCap, 1, 1048576, "MIB",
           "simulate a device with only MIB MiB of memory for Tessera: the allocation that would go past it ends the "
           "run with a message naming it, everything released, exit 1 (docs/RELIABILITY.md)");
+    text("--hide-features", t.hideFeatures, "LIST",
+         "simulate a device without these features (comma list of tessellation, geometry, transform-feedback, "
+         "pipeline-statistics, timestamps, wireframe, vertex-stores, multi-draw-indirect): they are not enabled, "
+         "a backend that needs one refuses, naming it, and without --backend the next backend that can runs");
 
     group("Scene");
     choice("--scene", o.scene, {"terrain", "characters", "crowd"}, "NAME",

@@ -20,6 +20,7 @@ struct DemoFlagText {
     std::vector<std::string> models, splats;
     std::string agents, clearColor, camera, subdivLevel, orbitDistance;
     std::string characterPath, normals, subdivView, sculpt, terrainMode, tessMetric, look, terrainShading, sun;
+    std::string hideFeatures;
     float lodNear = 0, lodFar = 0, lodEdge = 0, characterLevel = 0, subdivPixels = 0;
     uint64_t lodBudget = 0, subdivBudget = 0, deviceMemoryCap = 0;
     uint32_t lodMiddleMax = 0, lodFade = 0, lodFarTriangles = 0, lodNearMax = 0, renderdocFrame = 0;

@@ -38,6 +38,17 @@ Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& opti
     if (!selected) return selected.error();
     session->mSelected = std::move(selected.value());
     log::info("backend " + session->capabilities().name + " on " + session->deviceName());
+    if (const gpu::Device* device = session->mSelected->device.get()) {
+        // What the device lacks degrades a feature rather than failing the
+        // run; say so instead of leaving a solid frame or zero timings
+        // unexplained (--hide-features can cause both on purpose).
+        const auto& f = device->features();
+        if (options.wireframe && !f.fillModeNonSolid)
+            log::warning("--wireframe: " + f.deviceName + " has no wireframe fill mode (fillModeNonSolid); drawing solid");
+        if (!f.timestamps && (!options.benchmark.empty() || !options.capture.empty() || !options.bench.empty()))
+            log::warning(f.deviceName + " has no timestamp queries on its graphics queue: every GPU time in the "
+                         "benchmark and the trace reads 0");
+    }
     if (session->mRenderDoc && !session->mSelected->instance) {
         log::warning("--renderdoc: backend " + session->capabilities().name + " records no GPU work to capture");
         session->mRenderDoc.reset();

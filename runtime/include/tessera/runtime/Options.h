@@ -7,6 +7,7 @@
 /// names its flag, documented in `tessera-demo --help`).
 
 #include "tessera/backend/CharacterDesc.h"
+#include "tessera/backend/FeatureMask.h"
 #include "tessera/backend/FrameInfo.h"
 #include "tessera/core/Result.h"
 #include "tessera/scene/CameraPose.h"
@@ -54,6 +55,9 @@ struct Options {
     /// no cap); past it an allocation throws gpu::OutOfDeviceMemory as a real
     /// exhaustion would (gpu::Device::setMemoryCap).
     uint64_t deviceMemoryCap = 0;
+    /// --hide-features: device features the backends are told the device
+    /// lacks (and that are not enabled on it).
+    backend::FeatureMask hiddenFeatures;
     /// Fault injection for the exhaustion tests (gpu::Device::failAllocation):
     /// the device allocation with this index fails. No flag sets it.
     std::optional<uint64_t> failAllocation;

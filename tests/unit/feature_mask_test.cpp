@@ -1,0 +1,53 @@
+// --hide-features' parser and mask (backend::FeatureMask): names in, flags
+// cleared, an unknown name refused with the known ones listed.
+#include "tessera/backend/FeatureMask.h"
+
+#include <gtest/gtest.h>
+
+using namespace tessera::backend;
+
+namespace {
+
+DeviceFeatures everything() {
+    DeviceFeatures f;
+    f.tessellationShader = f.geometryShader = f.transformFeedback = f.pipelineStatistics = true;
+    f.timestamps = f.fillModeNonSolid = f.vertexStores = f.multiDrawIndirect = true;
+    f.maxTessellationLevel = 64;
+    return f;
+}
+
+} // namespace
+
+TEST(FeatureMask, HidesExactlyTheNamedFeatures) {
+    auto mask = parseFeatureMask("tessellation,multi-draw-indirect");
+    ASSERT_TRUE(mask) << mask.error().message;
+    DeviceFeatures f = everything();
+    applyFeatureMask(mask.value(), f);
+    EXPECT_FALSE(f.tessellationShader);
+    EXPECT_EQ(f.maxTessellationLevel, 0u) << "no tessellation, no level";
+    EXPECT_FALSE(f.multiDrawIndirect);
+    EXPECT_TRUE(f.geometryShader && f.transformFeedback && f.pipelineStatistics && f.timestamps &&
+                f.fillModeNonSolid && f.vertexStores);
+}
+
+TEST(FeatureMask, EveryListedNameParsesAndAnEmptyListHidesNothing) {
+    auto all = parseFeatureMask("tessellation,geometry,transform-feedback,pipeline-statistics,timestamps,wireframe,"
+                                "vertex-stores,multi-draw-indirect");
+    ASSERT_TRUE(all) << all.error().message;
+    DeviceFeatures f = everything();
+    applyFeatureMask(all.value(), f);
+    EXPECT_FALSE(f.tessellationShader || f.geometryShader || f.transformFeedback || f.pipelineStatistics ||
+                 f.timestamps || f.fillModeNonSolid || f.vertexStores || f.multiDrawIndirect);
+    auto none = parseFeatureMask("");
+    ASSERT_TRUE(none);
+    EXPECT_TRUE(none.value().empty());
+}
+
+TEST(FeatureMask, AnUnknownNameIsRefusedWithTheKnownOnes) {
+    for (const char* list : {"tessellation,warp", "Tessellation", "tessellation,", ",geometry"}) {
+        auto mask = parseFeatureMask(list);
+        ASSERT_FALSE(mask) << list;
+        EXPECT_NE(mask.error().message.find("unknown feature"), std::string::npos) << mask.error().message;
+        EXPECT_NE(mask.error().message.find(featureMaskNames()), std::string::npos) << mask.error().message;
+    }
+}
