@@ -119,9 +119,9 @@ int execute(const Options& options) {
         // Thrown by whichever allocation did not fit, at load time or in a
         // frame; by the time it lands here the run's objects have released
         // their GPU resources and the device is gone (gpu/OutOfDeviceMemory.h).
+        const std::string less = "ask for less (--agents, --width/--height, --model, a smaller --heightmap)";
         log::error(std::string(e.what()) + "; " +
-                   (e.capBytes() ? "raise --device-memory-cap or ask for less (--agents, --width/--height, --model, a smaller --heightmap)"
-                                 : "ask for less (--agents, --width/--height, --model, a smaller --heightmap) or pick another --device"));
+                   (e.capBytes() ? "raise it (--device-memory-cap) or " + less : less + " or pick another --device"));
         code = 1;
     }
     if (options.validation) {

@@ -187,26 +187,23 @@ VkDeviceMemory Device::allocate(const VkMemoryRequirements& req, VkMemoryPropert
         type = findMemoryType(req.memoryTypeBits, flags & ~VK_MEMORY_PROPERTY_HOST_CACHED_BIT);
     if (type == UINT32_MAX) fatalVulkanError(("no memory type for " + name).c_str(), VK_ERROR_OUT_OF_DEVICE_MEMORY);
     const uint64_t inUse = mAllocatedBytes.load();
+    // One message for every way to run out: what, how much, against what.
+    auto outOfMemory = [&](const std::string& cause) {
+        const std::string limit = mMemoryCap ? " of the " + mebibytes(mMemoryCap) + " cap" : std::string();
+        return OutOfDeviceMemory("out of device memory: " + name + " needs " + mebibytes(req.size) + " with " +
+                                     mebibytes(inUse) + limit + " in use on " + mPhysical.features.deviceName + cause,
+                                 name, req.size, inUse, mMemoryCap);
+    };
     if (mAllocationCount++ == mFailingAllocation)
-        throw OutOfDeviceMemory("out of device memory: " + name + " needs " + mebibytes(req.size) + " with " +
-                                    mebibytes(inUse) + " in use on " + mPhysical.features.deviceName +
-                                    " (allocation " + std::to_string(mFailingAllocation) + " failed on purpose)",
-                                name, req.size, inUse, mMemoryCap);
-    if (mMemoryCap && inUse + req.size > mMemoryCap)
-        throw OutOfDeviceMemory("out of device memory: " + name + " needs " + mebibytes(req.size) + " with " +
-                                    mebibytes(inUse) + " of the " + mebibytes(mMemoryCap) +
-                                    " cap (--device-memory-cap) in use on " + mPhysical.features.deviceName,
-                                name, req.size, inUse, mMemoryCap);
+        throw outOfMemory(" (allocation " + std::to_string(mFailingAllocation) + " failed on purpose)");
+    if (mMemoryCap && inUse + req.size > mMemoryCap) throw outOfMemory("");
     VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     info.allocationSize = req.size;
     info.memoryTypeIndex = type;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     const VkResult result = vkAllocateMemory(mDevice, &info, nullptr, &memory);
     if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
-        throw OutOfDeviceMemory("out of device memory: " + name + " needs " + mebibytes(req.size) + " with " +
-                                    mebibytes(inUse) + " in use on " + mPhysical.features.deviceName + " (" +
-                                    resultName(result) + ")",
-                                name, req.size, inUse, mMemoryCap);
+        throw outOfMemory(std::string(" (") + resultName(result) + ")");
     TESSERA_VK_CHECK(result);
     setName(VK_OBJECT_TYPE_DEVICE_MEMORY, memory, name + ".memory");
     const uint64_t now = (mAllocatedBytes += req.size);
