@@ -159,9 +159,14 @@ void exhaust(const std::string& backend, const std::string& scene, Sample sample
             record(runOutOfMemory(options, false, "cap " + std::to_string(cap)));
             if (::testing::Test::HasFailure()) return;
         }
-        const Outcome squeezed = runOutOfMemory(base, true, "cap of the made scene");
-        EXPECT_TRUE(squeezed.inFrame) << "a frame allocated nothing under the squeezed cap";
-        record(squeezed);
+        // Frames that allocate (the shadow casters' buffer, the read-back
+        // buffer, r2vb's lazily made targets) fail under a cap of exactly
+        // what the made scene holds.
+        if (f.total > f.allocations) {
+            const Outcome squeezed = runOutOfMemory(base, true, "cap of the made scene");
+            EXPECT_TRUE(squeezed.inFrame) << "the squeezed run failed before its frames";
+            record(squeezed);
+        }
     }
     for (uint64_t index : failingAllocations(f, sample)) {
         Options options = base;
