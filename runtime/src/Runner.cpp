@@ -15,7 +15,7 @@
 #include "WindowController.h"
 #include "tessera/core/ImageFile.h"
 #include "tessera/core/Log.h"
-#include "tessera/gpu/OutOfDeviceMemory.h"
+#include "tessera/core/OutOfDeviceMemory.h"
 #include "tessera/profiler/CpuScope.h"
 #include "tessera/profiler/Profiler.h"
 
@@ -115,10 +115,10 @@ int execute(const Options& options) {
             log::error(ran.error().message);
             code = 1;
         }
-    } catch (const gpu::OutOfDeviceMemory& e) {
+    } catch (const OutOfDeviceMemory& e) {
         // Thrown by whichever allocation did not fit, at load time or in a
         // frame; by the time it lands here the run's objects have released
-        // their GPU resources and the device is gone (gpu/OutOfDeviceMemory.h).
+        // their GPU resources and the device is gone (core/OutOfDeviceMemory.h).
         const std::string less = "ask for less (--agents, --width/--height, --model, a smaller --heightmap)";
         log::error(std::string(e.what()) + "; " +
                    (e.capBytes() ? "raise it (--device-memory-cap) or " + less : less + " or pick another --device"));

@@ -66,8 +66,13 @@ set(exemptions
     # that breaks a valid-usage rule on purpose (a viewport count of zero), so
     # the tests can prove the validation layer is on. Like every backend it
     # records through the frame the GPU layer hands it (FrameContext,
-    # RenderTarget). The other plugins in tests/plugins stay Vulkan-free.
-    "tests/plugins/InvalidUsagePlugin.cpp|gpu-layer")
+    # RenderTarget). The loader's plugins in tests/plugins stay Vulkan-free.
+    "tests/plugins/InvalidUsagePlugin.cpp|gpu-layer"
+    # A test backend plugin whose initialize fails after making GPU objects
+    # (a buffer, an image, a sampler, a descriptor-set layout) through the
+    # GPU layer, as a real backend's would, so the tests can prove the host
+    # shuts a half-initialised backend down.
+    "tests/plugins/InitFailsPlugin.cpp|gpu-layer")
 
 # The negative control judges its planted tree by the bare rules.
 if(DEFINED TESSERA_LAYERING_EXEMPTIONS AND NOT TESSERA_LAYERING_EXEMPTIONS)

@@ -1,17 +1,16 @@
 // Out of device memory (docs/RELIABILITY.md, "Exhaustion"): any allocation
 // of a scene can be the one that does not fit, at load time or in a frame.
-// Each must end the run with gpu::OutOfDeviceMemory naming it, release
+// Each must end the run with OutOfDeviceMemory naming it, release
 // everything made so far as the stack unwinds, and leave the validation
 // layer's object tracking with nothing to report when the device is
 // destroyed. Two ways to run out: the cap a user gives (--device-memory-cap,
-// gpu::Device::setMemoryCap) and the fault injection that fails allocation
-// number k (gpu::Device::failAllocation), which reaches the allocations a cap
+// Device::setMemoryCap) and the fault injection that fails allocation
+// number k (Device::failAllocation), which reaches the allocations a cap
 // cannot (those made after the load's staging peak, below it).
 //
 // The suite samples allocations per scene and backend; TESSERA_OOM_WALK=full
 // fails every one in turn (tools/oom_walk.sh; the figures in RELIABILITY.md).
-#include "tessera/gpu/Device.h"
-#include "tessera/gpu/OutOfDeviceMemory.h"
+#include "tessera/core/OutOfDeviceMemory.h"
 #include "tessera/profiler/Profiler.h"
 #include "tessera/runtime/BackendSelection.h"
 #include "tessera/runtime/SceneRun.h"
@@ -63,12 +62,12 @@ Footprint footprint(const Options& options) {
         ADD_FAILURE() << run.error().message;
         return f;
     }
-    const gpu::Device& device = *run.value()->session().device();
-    f.peak = device.peakAllocatedBytes();
-    f.allocations = device.allocationCount();
+    RenderSession& session = run.value()->session();
+    f.peak = session.peakDeviceBytes();
+    f.allocations = session.deviceAllocations();
     for (uint32_t frame = 0; frame < kFrames; ++frame) run.value()->step(frame, frame + 1 == kFrames);
     (void)run.value()->session().finish();
-    f.total = device.allocationCount();
+    f.total = session.deviceAllocations();
     return f;
 }
 
@@ -94,11 +93,11 @@ Outcome runOutOfMemory(const Options& options, bool squeeze, const std::string& 
             return outcome;
         }
         created = true;
-        gpu::Device& device = *run.value()->session().device();
-        if (squeeze) device.setMemoryCap(device.allocatedBytes());
+        RenderSession& session = run.value()->session();
+        if (squeeze) session.setDeviceMemoryCap(session.deviceBytes());
         for (uint32_t frame = 0; frame < kFrames; ++frame) run.value()->step(frame, frame + 1 == kFrames);
         (void)run.value()->session().finish();
-    } catch (const gpu::OutOfDeviceMemory& e) {
+    } catch (const OutOfDeviceMemory& e) {
         outcome.outOfMemory = true;
         outcome.inFrame = created;
         outcome.allocation = e.allocation();

@@ -1,6 +1,6 @@
 #include "tessera/gpu/Device.h"
 
-#include "tessera/gpu/OutOfDeviceMemory.h"
+#include "tessera/core/OutOfDeviceMemory.h"
 #include "tessera/gpu/VulkanCheck.h"
 
 #include <algorithm>
@@ -30,8 +30,6 @@ Fn load(VkDevice device, const char* name) {
 }
 
 } // namespace
-
-OutOfDeviceMemory::~OutOfDeviceMemory() = default;
 
 Result<std::unique_ptr<Device>> Device::create(Instance& instance, const PhysicalDeviceInfo& physical) {
     std::unique_ptr<Device> device(new Device());

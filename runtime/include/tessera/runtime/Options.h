@@ -52,7 +52,7 @@ struct Options {
     bool help = false;
     bool validation = false;
     /// --device-memory-cap: bytes of device memory the run may allocate (0:
-    /// no cap); past it an allocation throws gpu::OutOfDeviceMemory as a real
+    /// no cap); past it an allocation throws OutOfDeviceMemory as a real
     /// exhaustion would (gpu::Device::setMemoryCap).
     uint64_t deviceMemoryCap = 0;
     /// --hide-features: device features the backends are told the device

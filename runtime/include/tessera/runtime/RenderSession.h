@@ -109,6 +109,16 @@ public:
     uint64_t generation() const { return mGeneration; }
     /// Device memory the session's device holds now (0 without a device).
     uint64_t deviceBytes() const { return mSelected->device ? mSelected->device->allocatedBytes() : 0; }
+    /// The most device memory the session's device has held (0 without a device).
+    uint64_t peakDeviceBytes() const { return mSelected->device ? mSelected->device->peakAllocatedBytes() : 0; }
+    /// Device allocations made so far (0 without a device): with
+    /// Options::failAllocation, what the exhaustion tests count through.
+    uint64_t deviceAllocations() const { return mSelected->device ? mSelected->device->allocationCount() : 0; }
+    /// Caps the device memory from now on (Options::deviceMemoryCap at
+    /// creation); an allocation past it throws OutOfDeviceMemory. 0: no cap.
+    void setDeviceMemoryCap(uint64_t bytes) {
+        if (mSelected->device) mSelected->device->setMemoryCap(bytes);
+    }
     /// The characters' shadows the next frames draw on the terrain
     /// (FrameInfo::shadowCasters, shadowRegion); `casters` must stay valid
     /// until renderFrame has been called.

@@ -1,7 +1,9 @@
 #pragma once
 /// @file OutOfDeviceMemory.h
 /// The one exception Tessera's Vulkan layer throws: a device-memory
-/// allocation that did not fit.
+/// allocation that did not fit. Declared in the core, Vulkan-free, so a host
+/// (the runtime, a game embedding it, its tests) catches it without
+/// including the GPU layer.
 ///
 /// Tessera reports what a user can get wrong through Result (Result.h). Device
 /// memory running out is different: it can happen in any constructor of a
@@ -23,7 +25,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace tessera::gpu {
+namespace tessera {
 
 class OutOfDeviceMemory : public std::runtime_error {
 public:
@@ -33,7 +35,7 @@ public:
                       uint64_t capBytes)
         : std::runtime_error(what), mAllocation(std::move(allocation)), mRequested(requestedBytes), mInUse(inUseBytes),
           mCap(capBytes) {}
-    ~OutOfDeviceMemory() override; // out of line: one home for the vtable and type info (Device.cpp)
+    ~OutOfDeviceMemory() override; // out of line: one home for the vtable and type info (core)
 
     /// The debug name of the buffer or image that did not fit.
     const std::string& allocation() const { return mAllocation; }
@@ -52,4 +54,4 @@ private:
     uint64_t mCap = 0;
 };
 
-} // namespace tessera::gpu
+} // namespace tessera
