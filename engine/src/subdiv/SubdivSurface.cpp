@@ -38,19 +38,22 @@ Far::PatchTableFactory::Options patchOptions(const SubdivSettings& settings) {
 
 // Base vertices to everything the patches index: identity rows for the base
 // vertices, every refined level, then the local points, all factorized to
-// base vertices so an update is one pass.
-std::unique_ptr<const Far::StencilTable> createStencils(const Far::TopologyRefiner& refiner,
-                                                        const Far::PatchTable& patchTable) {
-    Far::StencilTableFactory::Options options;
+// base vertices so an update is one pass. Through the float instantiation
+// (StencilTableReal<float>), not the compatibility StencilTable: Far's
+// wrappers static_cast the tables they build to that subclass, which UBSan's
+// vptr check rightly reports (the object is never a StencilTable).
+std::unique_ptr<const FloatStencils> createStencils(const Far::TopologyRefiner& refiner,
+                                                    const Far::PatchTable& patchTable) {
+    using Factory = Far::StencilTableFactoryReal<float>;
+    Factory::Options options;
     options.generateOffsets = true;
     options.generateControlVerts = true;
     options.generateIntermediateLevels = true;
     options.factorizeIntermediateLevels = true;
-    std::unique_ptr<const Far::StencilTable> vertices(Far::StencilTableFactory::Create(refiner, options));
-    const Far::StencilTable* local = patchTable.GetLocalPointStencilTable();
+    std::unique_ptr<const FloatStencils> vertices(Factory::Create(refiner, options));
+    const FloatStencils* local = patchTable.GetLocalPointStencilTable<float>();
     if (!local || local->GetNumStencils() == 0) return vertices;
-    return std::unique_ptr<const Far::StencilTable>(
-        Far::StencilTableFactory::AppendLocalPointStencilTable(refiner, vertices.get(), local));
+    return std::unique_ptr<const FloatStencils>(Factory::AppendLocalPointStencilTable(refiner, vertices.get(), local));
 }
 
 bool finite(const glm::vec3& p) {
@@ -143,10 +146,10 @@ Status SubdivSurface::updateControlPoints(std::span<const glm::vec3> basePositio
 }
 
 RefineStencils SubdivSurface::refineStencils() const {
-    const Far::StencilTable& table = *mImpl->stencils;
+    const FloatStencils& table = *mImpl->stencils;
     RefineStencils result;
     for (int i = 0; i < table.GetNumStencils(); ++i) {
-        const Far::Stencil stencil = table.GetStencil(Far::Index(i));
+        const Far::StencilReal<float> stencil = table.GetStencil(Far::Index(i));
         result.offsets.push_back(uint32_t(result.indices.size()));
         result.sizes.push_back(uint32_t(stencil.GetSize()));
         for (int k = 0; k < stencil.GetSize(); ++k) {

@@ -19,6 +19,9 @@
 namespace tessera::subdiv {
 
 namespace Far = OpenSubdiv::Far;
+/// Far's stencil table at float precision, named without the compatibility
+/// subclass Far::StencilTable (see createStencils in SubdivSurface.cpp).
+using FloatStencils = Far::StencilTableReal<float>;
 
 struct SubdivSurface::Impl {
     std::string name;
@@ -32,7 +35,7 @@ struct SubdivSurface::Impl {
     std::unique_ptr<const Far::PatchMap> patchMap;
     /// Base vertices to every control point (refined vertices and local
     /// points), factorized so one application updates everything.
-    std::unique_ptr<const Far::StencilTable> stencils;
+    std::unique_ptr<const FloatStencils> stencils;
 
     std::vector<uint32_t> firstPtex; ///< per base face, plus the total at the end
     std::vector<glm::vec3> controlPoints;
