@@ -22,13 +22,6 @@ Result<std::unique_ptr<gpu::Instance>> makeInstance(const Options& options) {
     return gpu::Instance::create(io);
 }
 
-/// --hide-features: the device as the backends will see it, and what
-/// Device::create enables.
-void hideFeatures(const Options& options, backend::DeviceFeatures& features) {
-    if (options.hiddenFeatures.empty()) return;
-    backend::applyFeatureMask(options.hiddenFeatures, features);
-}
-
 std::string joinMissing(const backend::BackendCapabilities& caps) {
     std::string out;
     for (const auto& m : caps.missing) out += (out.empty() ? "" : ", ") + m;
@@ -67,7 +60,8 @@ Result<std::unique_ptr<SelectedBackend>> selectBackend(const Options& options) {
             if (!instance) return instance.error();
             auto physical = instance.value()->selectDevice(options.device);
             if (!physical) return physical.error();
-            hideFeatures(options, physical.value().features);
+            // --hide-features: the device as the backends see it and as Device::create enables it.
+            backend::applyFeatureMask(options.hiddenFeatures, physical.value().features);
             auto device = gpu::Device::create(*instance.value(), physical.value());
             if (!device) return device.error();
             selected->instance = std::move(instance.value());
@@ -126,7 +120,7 @@ Status listBackends(const Options& options) {
         if (!physical) return physical.error();
         std::printf("device: %s (%s)\n\n", physical->features.deviceName.c_str(), gpu::deviceTypeName(physical->type));
         deviceFeatures = physical->features;
-        hideFeatures(options, *deviceFeatures);
+        backend::applyFeatureMask(options.hiddenFeatures, *deviceFeatures);
     } else {
         std::printf("device: none (%s)\n\n", created.error().message.c_str());
     }
@@ -155,7 +149,7 @@ Status listDevices(const Options& options) {
     auto chosen = instance.value()->selectDevice(options.device);
     for (const auto& d : instance.value()->devices()) {
         backend::DeviceFeatures f = d.features;
-        hideFeatures(options, f);
+        backend::applyFeatureMask(options.hiddenFeatures, f);
         std::printf("%u: %s (%s) driver %s %s%s\n   tessellation %s (max %u), geometry %s, transform feedback %s, "
                     "pipeline statistics %s, timestamps %s\n",
                     d.index, f.deviceName.c_str(), gpu::deviceTypeName(d.type), f.driverName.c_str(), f.driverInfo.c_str(),

@@ -102,10 +102,7 @@ Status RenderSession::initializeBackend(bool alreadyInitialized) {
             // when the backend object goes (the contract: shutdown releases
             // whatever initialize made; a failed switch drops the object).
             backend.shutdown();
-            // Named for the user unless the backend's message already says which.
-            const std::string name = "backend " + mSelected->capabilities.name;
-            if (ok.error().message.rfind(name, 0) == 0) return ok.error();
-            return fail(name, ": ", ok.error().message);
+            return ok.error();
         }
     }
     // The upload copies the CPU height field as it is now, craters included,

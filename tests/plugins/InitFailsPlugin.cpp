@@ -37,7 +37,7 @@ public:
         VkDescriptorSetLayoutCreateInfo layout{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
         vkCreateDescriptorSetLayout(device.handle(), &layout, nullptr, &mLayout);
         device.setName(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, mLayout, "init-fails.layout");
-        return fail("the pipeline \"init-fails.draw\" does not build on ", info.features.deviceName,
+        return fail("backend init-fails: the pipeline \"init-fails.draw\" does not build on ", info.features.deviceName,
                     " (a test backend that always fails here)");
     }
     void shutdown() override {

@@ -14,7 +14,7 @@
 /// stack unwinds (RAII; the backend contract requires it, docs/ARCHITECTURE.md
 /// "Errors"), and the host catches it at the top of the run, prints what()
 /// and exits non-zero. The validation layer's object tracking then finds
-/// nothing left behind (tests/runtime/device_memory_cap_test.cpp).
+/// nothing left behind (tests/runtime/device_memory_exhaustion_test.cpp).
 ///
 /// It comes either from the driver (VK_ERROR_OUT_OF_DEVICE_MEMORY or
 /// VK_ERROR_OUT_OF_HOST_MEMORY) or from the cap a host sets with

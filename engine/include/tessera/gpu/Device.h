@@ -80,7 +80,8 @@ public:
     /// Allocates device memory and accounts for it in allocatedBytes().
     /// Throws OutOfDeviceMemory when the driver refuses (out of device or
     /// host memory) or when the allocation would take allocatedBytes() past
-    /// memoryCap(); the message names `name`, the size and the memory in use.
+    /// the cap of setMemoryCap; the message names `name`, the size and the
+    /// memory in use.
     VkDeviceMemory allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags flags, const std::string& name);
     void free(VkDeviceMemory memory, VkDeviceSize size);
     /// Device memory currently allocated through this device.
@@ -92,7 +93,6 @@ public:
     /// OutOfDeviceMemory as a real exhaustion would. For the demo's
     /// --device-memory-cap and the exhaustion tests.
     void setMemoryCap(uint64_t bytes) { mMemoryCap = bytes; }
-    uint64_t memoryCap() const { return mMemoryCap; }
     /// Allocations made since the device was created.
     uint64_t allocationCount() const { return mAllocationCount; }
     /// Fault injection: allocation number `index` (counting from 0 since the
