@@ -15,11 +15,13 @@ install(TARGETS tessera_core tessera_gpu tessera_assets tessera_subdiv tessera_r
     RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # Public headers, the host/shader layouts among them (tessera/shaders/), all
 # under include/tessera so none can collide with a game's own.
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/include/tessera DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+foreach(library core subdiv assets gpu)
+    install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/${library}/include/tessera DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endforeach()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/include/tessera DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 # Shared GLSL for games that write their own passes (compile with
 # -I<prefix>/share/tessera/glsl -I<prefix>/include).
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/shaders/include/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tessera/glsl)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/shaders/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tessera/glsl FILES_MATCHING PATTERN "*.glsl")
 install(DIRECTORY ${PROJECT_BINARY_DIR}/content/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tessera/content OPTIONAL)
 install(EXPORT TesseraTargets NAMESPACE Tessera:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/Tessera)
 

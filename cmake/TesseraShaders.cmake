@@ -12,8 +12,8 @@
 # Includes generated at build time (tools/osdglsl: OpenSubdiv's patch basis).
 set(TESSERA_GENERATED_GLSL_DIR ${PROJECT_BINARY_DIR}/generated/glsl)
 set(TESSERA_SHADER_INCLUDE_DIRS
-    ${PROJECT_SOURCE_DIR}/engine/shaders/include
-    ${PROJECT_SOURCE_DIR}/engine/include
+    ${PROJECT_SOURCE_DIR}/engine/shaders
+    ${PROJECT_SOURCE_DIR}/engine/core/include
     ${TESSERA_GENERATED_GLSL_DIR}
     CACHE INTERNAL "Shared GLSL include directories")
 

@@ -98,7 +98,7 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
     if (given("--renderdoc")) o.renderdocFrame = t.renderdocFrame;
     if (given("--device-memory-cap")) o.deviceMemoryCap = t.deviceMemoryCap << 20;
     if (given("--hide-features")) {
-        auto mask = backend::parseFeatureMask(t.hideFeatures);
+        auto mask = device::parseFeatureMask(t.hideFeatures);
         if (!mask) return fail("--hide-features: ", mask.error().message);
         o.hiddenFeatures = mask.value();
     }

@@ -1,9 +1,9 @@
 // hulldomain: the D3D11-style backend. A compute pre-pass writes one
 // tessellation level per control-mesh edge; tessellation control (hull) and
 // evaluation (domain) shaders draw the patches with levels up to 64.
-#include "BasicCharacterBackend.h"
+#include "common/BasicCharacterBackend.h"
 #include "tessera/shaders/FrameUniforms.h"
-#include "GpuCrowdSet.h"
+#include "common/GpuCrowdSet.h"
 #include "HulldomainCharacterPatchPass.h"
 #include "HulldomainCharacterSkinPass.h"
 #include "HulldomainCrowdPass.h"
@@ -21,7 +21,7 @@ namespace {
 
 class HulldomainBackend final : public BasicCharacterBackend {
 public:
-    backend::BackendCapabilities capabilities(const backend::DeviceFeatures* device) override {
+    backend::BackendCapabilities capabilities(const device::DeviceFeatures* device) override {
         backend::BackendCapabilities caps;
         caps.name = "hulldomain";
         caps.description = "D3D11-style: compute factor pre-pass, tessellation control/evaluation shaders";

@@ -1,6 +1,6 @@
 #include "HulldomainCharacterPatchPass.h"
 
-#include "CommandHelpers.h"
+#include "common/CommandHelpers.h"
 #include "tessera/shaders/FrameUniforms.h"
 #include "tessera/gpu/FrameContext.h"
 

@@ -6,7 +6,7 @@
 /// Two-pass: control points are the compressed vertices pass 1 wrote;
 /// single-pass: the domain stage skins all three corners at every point.
 
-#include "BasicCharacterBackend.h"
+#include "common/BasicCharacterBackend.h"
 #include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/PipelineLayout.h"
 

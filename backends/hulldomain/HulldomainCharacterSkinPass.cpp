@@ -2,7 +2,7 @@
 
 #include "tessera/gpu/Barriers.h"
 
-#include "CommandHelpers.h"
+#include "common/CommandHelpers.h"
 #include "tessera/shaders/FrameUniforms.h"
 #include "tessera/gpu/FrameContext.h"
 

@@ -4,7 +4,7 @@
 /// compute shader skins every cage vertex once and writes the 128-bit
 /// compressed vertex to a storage buffer.
 
-#include "BasicCharacterBackend.h"
+#include "common/BasicCharacterBackend.h"
 #include "tessera/gpu/ComputePipeline.h"
 #include "tessera/gpu/PipelineLayout.h"
 

@@ -7,9 +7,9 @@
 /// per creature an indirect tessellated draw (near), an indirect draw of the
 /// cage (middle) and of the far mesh (far), skinned from the baked clips.
 
-#include "CrowdDescriptors.h"
-#include "CrowdMeshPass.h"
-#include "GpuCrowd.h"
+#include "common/CrowdDescriptors.h"
+#include "common/CrowdMeshPass.h"
+#include "common/GpuCrowd.h"
 #include "tessera/gpu/ComputePipeline.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"

@@ -7,7 +7,7 @@
 /// whose domain stage evaluates the shared subdiv_eval.glsl at
 /// gl_TessCoord, levels up to 64.
 
-#include "GpuSubdiv.h"
+#include "common/GpuSubdiv.h"
 #include "tessera/gpu/ComputePipeline.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"

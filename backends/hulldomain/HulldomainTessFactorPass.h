@@ -5,7 +5,7 @@
 /// (hulldomain_terrain_factors.comp), the D3D11 way of moving the metric out
 /// of the hull shader so each shared edge is evaluated once.
 
-#include "GpuTerrain.h"
+#include "common/GpuTerrain.h"
 #include "tessera/shaders/TessFactors.h"
 #include "tessera/gpu/ComputePipeline.h"
 #include "tessera/gpu/FrameContext.h"

@@ -50,7 +50,7 @@ uint64_t characterTriangles(float level) {
 
 class NullBackend final : public backend::Backend {
 public:
-    backend::BackendCapabilities capabilities(const backend::DeviceFeatures*) override {
+    backend::BackendCapabilities capabilities(const device::DeviceFeatures*) override {
         backend::BackendCapabilities caps;
         caps.name = "null";
         caps.description = "no GPU: runs the frame logic and counts what would be drawn";
@@ -159,7 +159,7 @@ public:
         if (!mInitialized) return fail("null backend: createSubdiv before initialize");
         if (Status ok = backend::checkSubdivDesc(desc); !ok) return ok.error();
         auto surface = std::make_unique<NullSubdiv>();
-        surface->mesh = *desc.mesh;
+        static_cast<backend::SubdivMeshData&>(surface->mesh) = *desc.mesh;
         surface->cage = desc.mesh->restPositions;
         mSubdivs.push_back(std::move(surface));
         return backend::SubdivHandle{static_cast<uint32_t>(mSubdivs.size() - 1)};

@@ -38,11 +38,11 @@
 // and the lists compacted by traversing it) and R2vbCrowdNearPass (near
 // slots, their commands and skinned compressed cages); the tiers are then
 // drawn by the shared CrowdMeshPass and EmulatedCrowdNearPass.
-#include "CrowdDescriptors.h"
-#include "CrowdMeshPass.h"
-#include "EmulatedCrowdNearPass.h"
-#include "EmulatedTerrainBackend.h"
-#include "GpuCrowdSet.h"
+#include "common/CrowdDescriptors.h"
+#include "common/CrowdMeshPass.h"
+#include "common/EmulatedCrowdNearPass.h"
+#include "common/EmulatedTerrainBackend.h"
+#include "common/GpuCrowdSet.h"
 #include "R2vbCagePass.h"
 #include "R2vbCharacterSkinPass.h"
 #include "R2vbCommandPass.h"
@@ -70,7 +70,7 @@ namespace {
 
 class R2vbBackend final : public EmulatedTerrainBackend {
 public:
-    backend::BackendCapabilities capabilities(const backend::DeviceFeatures* device) override {
+    backend::BackendCapabilities capabilities(const device::DeviceFeatures* device) override {
         backend::BackendCapabilities caps;
         caps.name = "r2vb";
         caps.description = "D3D9-style: render-to-vertex-buffer multipass, emulated tessellator";

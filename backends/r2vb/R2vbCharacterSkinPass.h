@@ -7,7 +7,7 @@
 /// compressed cage buffer, which the tessellation pass reads as a vertex
 /// texture (the R2VB step). No compute, no storage writes.
 
-#include "BasicCharacterBackend.h"
+#include "common/BasicCharacterBackend.h"
 #include "tessera/gpu/Image.h"
 #include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/PipelineLayout.h"

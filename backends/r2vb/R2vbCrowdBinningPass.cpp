@@ -1,6 +1,6 @@
 #include "R2vbCrowdBinningPass.h"
 
-#include "CommandHelpers.h"
+#include "common/CommandHelpers.h"
 #include "R2vbRecording.h"
 #include "tessera/gpu/Barriers.h"
 

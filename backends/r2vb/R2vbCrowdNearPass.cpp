@@ -1,7 +1,7 @@
 #include "R2vbCrowdNearPass.h"
 
 #include "tessera/shaders/CharacterUniforms.h"
-#include "CommandHelpers.h"
+#include "common/CommandHelpers.h"
 #include "R2vbRecording.h"
 
 #include "r2vb_crowd_commands.vert.spv.h"

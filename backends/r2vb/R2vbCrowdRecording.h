@@ -5,7 +5,7 @@
 /// changes between rendering, sampling and copying, and the exact R2VB copy
 /// (a run of a target's texels to a buffer, texel i to element i).
 
-#include "GpuCrowd.h"
+#include "common/GpuCrowd.h"
 #include "R2vbCrowdTargets.h"
 #include "shaders/R2vbCrowdLayout.h"
 #include "tessera/gpu/Buffer.h"

@@ -7,7 +7,7 @@
 /// are shared by the frames in flight, as GpuCrowd's buffers are: the
 /// passes' barriers order one frame's use after the last.
 
-#include "GpuCrowd.h"
+#include "common/GpuCrowd.h"
 #include "shaders/R2vbCrowdLayout.h"
 #include "tessera/core/Result.h"
 #include "tessera/gpu/Buffer.h"

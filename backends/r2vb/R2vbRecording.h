@@ -6,7 +6,7 @@
 /// buffer or indirect buffer). Barriers go through the shared layer's
 /// helpers (tessera/gpu/Barriers.h).
 
-#include "CommandHelpers.h"
+#include "common/CommandHelpers.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/Image.h"
 #include "tessera/gpu/Pipeline.h"

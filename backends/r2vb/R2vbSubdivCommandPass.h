@@ -9,8 +9,8 @@
 /// shader); the targets are then copied to the surface's record texel
 /// buffer and indirect buffer (R2VB).
 
-#include "EmulatedDrawSource.h"
-#include "GpuSubdiv.h"
+#include "common/EmulatedDrawSource.h"
+#include "common/GpuSubdiv.h"
 #include "R2vbSubdivTargets.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/FrameContext.h"

@@ -8,7 +8,7 @@
 /// the target's texels are copied into the surface's refined points (the
 /// R2VB step), which later passes read as a texel buffer.
 
-#include "GpuSubdiv.h"
+#include "common/GpuSubdiv.h"
 #include "R2vbSubdivTargets.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"

@@ -11,8 +11,8 @@
 /// One set per surface, not per frame slot: every pass waits for the
 /// previous draw's reads with a barrier.
 
-#include "EmulatedDrawSource.h"
-#include "GpuSubdiv.h"
+#include "common/EmulatedDrawSource.h"
+#include "common/GpuSubdiv.h"
 #include "shaders/R2vbLayout.h"
 #include "tessera/core/Result.h"
 #include "tessera/gpu/Buffer.h"

@@ -18,7 +18,7 @@
 // target, successive stream-out passes sort them into the tier lists, and
 // stream queries copied on the GPU give the indirect draws their counts
 // (crowd.cull, crowd.bin, crowd.slots, crowd.skin; StreamoutCrowdRenderer.h).
-#include "EmulatedTerrainBackend.h"
+#include "common/EmulatedTerrainBackend.h"
 
 #include "tessera/gpu/Barriers.h"
 #include "StreamoutBuffers.h"
@@ -40,7 +40,7 @@ namespace {
 
 class StreamoutBackend final : public EmulatedTerrainBackend {
 public:
-    backend::BackendCapabilities capabilities(const backend::DeviceFeatures* device) override {
+    backend::BackendCapabilities capabilities(const device::DeviceFeatures* device) override {
         backend::BackendCapabilities caps;
         caps.name = "streamout";
         caps.description = "D3D10-style: transform feedback, geometry-shader culling, draw-auto, emulated tessellator";

@@ -5,7 +5,7 @@
 /// vertex, captured by transform feedback into the instance's compressed
 /// cage buffer, with the rasterizer off.
 
-#include "BasicCharacterBackend.h"
+#include "common/BasicCharacterBackend.h"
 #include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/PipelineLayout.h"
 

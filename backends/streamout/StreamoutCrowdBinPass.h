@@ -9,7 +9,7 @@
 /// copied on the GPU into the indirect commands' instance counts and the
 /// near passes' draws, so nothing waits on the CPU.
 
-#include "GpuCrowd.h"
+#include "common/GpuCrowd.h"
 #include "StreamoutCrowdBindings.h"
 #include "StreamoutCrowdResources.h"
 #include "tessera/gpu/FrameContext.h"

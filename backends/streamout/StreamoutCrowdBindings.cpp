@@ -1,6 +1,6 @@
 #include "StreamoutCrowdBindings.h"
 
-#include "CommandHelpers.h"
+#include "common/CommandHelpers.h"
 #include "tessera/shaders/CrowdInstance.h"
 #include "tessera/gpu/Device.h"
 

@@ -6,7 +6,7 @@
 /// state target, the cage texels; push constants streamout_crowd.glsl
 /// describes) and the push-descriptor writes of one frame.
 
-#include "GpuCrowd.h"
+#include "common/GpuCrowd.h"
 #include "StreamoutCrowdResources.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/PipelineLayout.h"

@@ -10,7 +10,7 @@
 /// next state. That target is cleared to tsLodStateNone() first, so every
 /// id not drawn this frame starts the next one out of view.
 
-#include "GpuCrowd.h"
+#include "common/GpuCrowd.h"
 #include "StreamoutCrowdBindings.h"
 #include "StreamoutCrowdResources.h"
 #include "tessera/gpu/FrameContext.h"

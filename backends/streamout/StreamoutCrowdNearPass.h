@@ -14,7 +14,7 @@
 ///    crowd.nearCages(), again in one session, so each entry's cage lands in
 ///    the slot its record took.
 
-#include "GpuCrowd.h"
+#include "common/GpuCrowd.h"
 #include "StreamoutCrowdBindings.h"
 #include "StreamoutCrowdResources.h"
 #include "tessera/gpu/FrameContext.h"

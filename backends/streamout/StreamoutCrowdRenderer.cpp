@@ -1,6 +1,6 @@
 #include "StreamoutCrowdRenderer.h"
 
-#include "CrowdDescriptors.h"
+#include "common/CrowdDescriptors.h"
 #include "StreamoutCrowdBindings.h"
 
 #include "character.frag_crowd_texels.spv.h"

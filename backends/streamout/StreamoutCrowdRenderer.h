@@ -13,9 +13,9 @@
 ///   crowd.skin    the near slots' cages skinned and compressed by stream output
 ///   crowd.near, crowd.middle, crowd.far   the draws, inside the main pass
 
-#include "CrowdMeshPass.h"
-#include "EmulatedCrowdNearPass.h"
-#include "GpuCrowdSet.h"
+#include "common/CrowdMeshPass.h"
+#include "common/EmulatedCrowdNearPass.h"
+#include "common/GpuCrowdSet.h"
 #include "StreamoutCrowdBinPass.h"
 #include "StreamoutCrowdCullPass.h"
 #include "StreamoutCrowdNearPass.h"

@@ -26,7 +26,7 @@
 /// One set serves every frame in flight: the GPU runs the frames in order and
 /// each drawCrowd starts with a barrier on the previous one's reads.
 
-#include "GpuCrowd.h"
+#include "common/GpuCrowd.h"
 #include "tessera/core/Result.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/BufferView.h"

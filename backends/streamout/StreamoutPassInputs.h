@@ -4,7 +4,7 @@
 /// frame slot's intermediate buffers, the draw's tessellation uniforms and a
 /// way to push the terrain's shared bindings (which BasicTerrainBackend owns).
 
-#include "GpuTerrain.h"
+#include "common/GpuTerrain.h"
 #include "StreamoutBuffers.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/PipelineLayout.h"

@@ -4,7 +4,7 @@
 /// passes need, and their pipelines' common state (barriers and descriptor
 /// writes: CommandHelpers.h).
 
-#include "CommandHelpers.h"
+#include "common/CommandHelpers.h"
 #include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/PipelineLayout.h"
 

@@ -6,8 +6,8 @@
 /// per surface, not per frame slot: each pass waits for the previous draw's
 /// reads with a barrier, as hulldomain's refine does on the refined points.
 
-#include "EmulatedDrawSource.h"
-#include "GpuSubdiv.h"
+#include "common/EmulatedDrawSource.h"
+#include "common/GpuSubdiv.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/BufferView.h"
 #include "tessera/gpu/Device.h"

@@ -1,6 +1,6 @@
 #include "StreamoutSubdivFactorPass.h"
 
-#include "CommandHelpers.h"
+#include "common/CommandHelpers.h"
 #include "StreamoutRecording.h"
 #include "StreamoutSubdivBuffers.h"
 #include "tessera/shaders/TessPattern.h"

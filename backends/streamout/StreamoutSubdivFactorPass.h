@@ -10,8 +10,8 @@
 /// streamout.factors does for terrain patches. Every domain writes its own
 /// record r = domain, so nothing needs clearing and no draw-auto is needed.
 
-#include "EmulatedDrawSource.h"
-#include "GpuSubdiv.h"
+#include "common/EmulatedDrawSource.h"
+#include "common/GpuSubdiv.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"

@@ -1,6 +1,6 @@
 #include "StreamoutSubdivRefinePass.h"
 
-#include "CommandHelpers.h"
+#include "common/CommandHelpers.h"
 #include "StreamoutRecording.h"
 #include "tessera/gpu/Barriers.h"
 

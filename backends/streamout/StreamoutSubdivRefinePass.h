@@ -6,7 +6,7 @@
 /// hulldomain's compute pass), captured by transform feedback straight into
 /// the surface's refined points, with the rasterizer off.
 
-#include "GpuSubdiv.h"
+#include "common/GpuSubdiv.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/PipelineLayout.h"

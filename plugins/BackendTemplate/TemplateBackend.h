@@ -11,7 +11,7 @@ namespace tessera::plugins {
 
 class TemplateBackend : public backend::Backend {
 public:
-    backend::BackendCapabilities capabilities(const backend::DeviceFeatures*) override {
+    backend::BackendCapabilities capabilities(const device::DeviceFeatures*) override {
         backend::BackendCapabilities caps;
         caps.name = "template";
         caps.description = "template for new backends (draws nothing)";

@@ -61,7 +61,7 @@ Result<std::unique_ptr<SelectedBackend>> selectBackend(const Options& options) {
             auto physical = instance.value()->selectDevice(options.device);
             if (!physical) return physical.error();
             // --hide-features: the device as the backends see it and as Device::create enables it.
-            backend::applyFeatureMask(options.hiddenFeatures, physical.value().features);
+            device::applyFeatureMask(options.hiddenFeatures, physical.value().features);
             auto device = gpu::Device::create(*instance.value(), physical.value());
             if (!device) return device.error();
             selected->instance = std::move(instance.value());
@@ -93,7 +93,7 @@ Result<backend::BackendPtr> createBackendOnDevice(SelectedBackend& selected, con
     }
     auto created = selected.registry.create(name);
     if (!created) return created.error();
-    const backend::DeviceFeatures* features = selected.device ? &selected.device->features() : nullptr;
+    const device::DeviceFeatures* features = selected.device ? &selected.device->features() : nullptr;
     caps = created.value()->capabilities(features);
     // A session keeps its device (and window) across switches, so the null
     // backend and the GPU backends cannot replace one another in it.
@@ -114,18 +114,18 @@ Status listBackends(const Options& options) {
     backend::BackendRegistry registry;
     for (const auto& error : loader.loadAll(registry)) log::warning(error.message);
 
-    std::optional<backend::DeviceFeatures> deviceFeatures;
+    std::optional<device::DeviceFeatures> deviceFeatures;
     if (auto created = makeInstance(options); created) {
         auto physical = created.value()->selectDevice(options.device);
         if (!physical) return physical.error();
         std::printf("device: %s (%s)\n\n", physical->features.deviceName.c_str(), gpu::deviceTypeName(physical->type));
         deviceFeatures = physical->features;
-        backend::applyFeatureMask(options.hiddenFeatures, *deviceFeatures);
+        device::applyFeatureMask(options.hiddenFeatures, *deviceFeatures);
     } else {
         std::printf("device: none (%s)\n\n", created.error().message.c_str());
     }
 
-    const backend::DeviceFeatures* features = deviceFeatures ? &*deviceFeatures : nullptr;
+    const device::DeviceFeatures* features = deviceFeatures ? &*deviceFeatures : nullptr;
     std::printf("%-11s %-9s %-10s %-4s %-4s %-7s %-6s %s\n", "backend", "status", "tess", "xfb", "geom", "compute",
                 "max tf", "description");
     for (const auto& name : registry.names()) {
@@ -148,8 +148,8 @@ Status listDevices(const Options& options) {
     if (!instance) return instance.error();
     auto chosen = instance.value()->selectDevice(options.device);
     for (const auto& d : instance.value()->devices()) {
-        backend::DeviceFeatures f = d.features;
-        backend::applyFeatureMask(options.hiddenFeatures, f);
+        device::DeviceFeatures f = d.features;
+        device::applyFeatureMask(options.hiddenFeatures, f);
         std::printf("%u: %s (%s) driver %s %s%s\n   tessellation %s (max %u), geometry %s, transform feedback %s, "
                     "pipeline statistics %s, timestamps %s\n",
                     d.index, f.deviceName.c_str(), gpu::deviceTypeName(d.type), f.driverName.c_str(), f.driverInfo.c_str(),

@@ -12,7 +12,7 @@
 // (SubdivBackendsGpu.RefinedPointsEqualTheCpuStencilsOnEveryBackend), and
 // their images agree (EmulatedImagesMatchHulldomain), so this holds on all
 // three.
-#include "GpuSubdiv.h"
+#include "common/GpuSubdiv.h"
 #include "GpuTestDevice.h"
 #include "OsdShapes.h"
 

@@ -9,8 +9,24 @@
 # It needs nothing but CMake, so it runs before (and without) a build. The
 # rules, by where the including file lives:
 #
+#   [library-order]  the libraries use only the libraries below them. A
+#             file belongs to the library of its folder; an include belongs
+#             to the library of its include root (tessera/<module>/ of the
+#             core's modules, tessera/subdiv/, tessera/assets/,
+#             tessera/runtime/, tessera/cli/) or of the file it reaches:
+#               engine/core      (tessera_core)    nothing but itself
+#               engine/subdiv    (tessera_subdiv)  core
+#               engine/assets    (tessera_assets)  core
+#               engine/gpu       (tessera_gpu)     core
+#               backends/common, backends/<name>   core, subdiv
+#               backends/null                      core, subdiv
+#               runtime          (tessera_runtime) core, subdiv, assets
+#               tools/cli        (tessera_cli)     core
+#             Uses of the GPU layer and of backends/common have rules of
+#             their own ([gpu-layer], [backend-header]) and are not judged
+#             twice here.
 #   [vulkan]  <vulkan/...>, <volk...> and vulkan*.h only in the GPU layer
-#             (engine/src/gpu, engine/include/tessera/gpu), the GPU backends
+#             (engine/gpu), the GPU backends
 #             (backends/<name>, not backends/null) and the GPU tests
 #             (tests/gpu). Not in runtime/ either: the runtime drives the
 #             GPU layer's classes and reaches Vulkan only through its headers,
@@ -33,7 +49,7 @@
 #             backends/common. Backends are plugins loaded by name; the host,
 #             the runtime, the demo and the examples never include them.
 #   [barrier]  a call of vkCmdPipelineBarrier (or ...2, ...2KHR) anywhere but
-#             engine/src/gpu/Barriers.cpp: every barrier goes through the GPU
+#             engine/gpu/src/Barriers.cpp: every barrier goes through the GPU
 #             layer's helpers (memoryBarrier, imageBarrier, bufferBarrier,
 #             pipelineBarrier in Barriers.h; transitionImage in Image.h).
 #   [tool-source]  a file under tools/<tool>/ other than its include/
@@ -166,6 +182,52 @@ function(backends_of_include include resolved outVar)
     set(${outVar} "" PARENT_SCOPE)
 endfunction()
 
+# --- The libraries and their order ([library-order]) -------------------------
+set(coreModules backend character core crowd device lod profiler scene shaders terrain tessellator)
+list(JOIN coreModules "|" coreModuleRegex)
+# mayUse_<library>: the libraries a library's files may include (its own
+# included); a file outside every library (tests, tools, the demo) is not
+# judged by this rule.
+set(mayUse_core core)
+set(mayUse_subdiv core subdiv)
+set(mayUse_assets core assets)
+set(mayUse_gpu core gpu)
+set(mayUse_backend core subdiv)
+set(mayUse_runtime core subdiv assets runtime)
+set(mayUse_cli core cli)
+
+function(library_of_file file outVar)
+    set(library "")
+    if(file MATCHES "^engine/(core|subdiv|assets|gpu)/")
+        set(library "${CMAKE_MATCH_1}")
+    elseif(file MATCHES "^backends/")
+        set(library backend)
+    elseif(file MATCHES "^runtime/")
+        set(library runtime)
+    elseif(file MATCHES "^tools/cli/")
+        set(library cli)
+    endif()
+    set(${outVar} "${library}" PARENT_SCOPE)
+endfunction()
+
+# The library an include reaches, or "" for none of the ordered ones (the
+# GPU layer's headers are [gpu-layer]'s to judge).
+function(library_of_include include resolved outVar)
+    set(library "")
+    if(resolved MATCHES "^engine/(core|subdiv|assets)/")
+        set(library "${CMAKE_MATCH_1}")
+    elseif(resolved MATCHES "^runtime/")
+        set(library runtime)
+    elseif(resolved MATCHES "^tools/cli/")
+        set(library cli)
+    elseif(resolved STREQUAL "" AND include MATCHES "^tessera/(${coreModuleRegex})/")
+        set(library core)
+    elseif(resolved STREQUAL "" AND include MATCHES "^tessera/(subdiv|assets|runtime|cli)/")
+        set(library "${CMAKE_MATCH_1}")
+    endif()
+    set(${outVar} "${library}" PARENT_SCOPE)
+endfunction()
+
 # --- Scan ---------------------------------------------------------------------
 # Lines are split on newlines; characters CMake's lists treat specially are
 # swapped for control characters first so every line stays one element.
@@ -179,7 +241,7 @@ foreach(file IN LISTS files)
     # Where the including file lives decides what it may include.
     set(zone host)
     set(ownBackend "")
-    if(file MATCHES "^engine/src/gpu/" OR file MATCHES "^engine/include/tessera/gpu/")
+    if(file MATCHES "^engine/gpu/")
         set(zone gpu)
     elseif(file MATCHES "^backends/([^/]+)/")
         set(ownBackend "${CMAKE_MATCH_1}")
@@ -194,6 +256,7 @@ foreach(file IN LISTS files)
         set(zone gpu-test)
     endif()
     get_filename_component(fileDir "${file}" DIRECTORY)
+    library_of_file("${file}" fileLibrary)
 
     file(READ "${root}/${file}" content)
     if(NOT content MATCHES "#[ \t]*include" AND NOT content MATCHES "vkCmdPipelineBarrier")
@@ -208,7 +271,7 @@ foreach(file IN LISTS files)
     foreach(line IN LISTS lines)
         math(EXPR lineNumber "${lineNumber} + 1")
         # [barrier]
-        if(line MATCHES "vkCmdPipelineBarrier(2|2KHR)?[ \t]*\\(" AND NOT file STREQUAL "engine/src/gpu/Barriers.cpp")
+        if(line MATCHES "vkCmdPipelineBarrier(2|2KHR)?[ \t]*\\(" AND NOT file STREQUAL "engine/gpu/src/Barriers.cpp")
             message("${file}:${lineNumber}: [barrier] vkCmdPipelineBarrier: record barriers through the GPU layer's helpers (tessera/gpu/Barriers.h, transitionImage in Image.h)")
             math(EXPR violations "${violations} + 1")
             continue()
@@ -240,6 +303,14 @@ foreach(file IN LISTS files)
         endif()
 
         set(found "")
+        # [library-order]
+        if(NOT fileLibrary STREQUAL "")
+            library_of_include("${include}" "${resolved}" includeLibrary)
+            if(NOT includeLibrary STREQUAL "" AND NOT includeLibrary IN_LIST mayUse_${fileLibrary})
+                list(JOIN mayUse_${fileLibrary} ", " usable)
+                list(APPEND found "library-order|${fileLibrary} is below ${includeLibrary}: it may use ${usable} only (docs/ARCHITECTURE.md, Layers)")
+            endif()
+        endif()
         # [vulkan]
         if(include MATCHES "^vulkan/" OR include MATCHES "(^|/)volk[^/]*$" OR include MATCHES "(^|/)vulkan[^/]*\\.h(pp)?$")
             if(zone STREQUAL "runtime")
@@ -251,7 +322,7 @@ foreach(file IN LISTS files)
             endif()
         endif()
         # [gpu-layer]
-        if(include MATCHES "(^|/)tessera/gpu/" OR resolved MATCHES "^engine/src/gpu/|^engine/include/tessera/gpu/")
+        if(include MATCHES "(^|/)tessera/gpu/" OR resolved MATCHES "^engine/gpu/")
             if(zone STREQUAL "null-backend")
                 list(APPEND found "gpu-layer|the null backend runs with no GPU and links tessera_core only")
             elseif(NOT zone MATCHES "^(gpu|backend|gpu-test|runtime)$")

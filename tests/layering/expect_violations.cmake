@@ -19,8 +19,12 @@ endforeach()
 # Each planted violation, as the check must report it (file:line: [rule]
 # #include ...); an edit to a planted file moves these lines with it.
 set(expected
-    "engine/src/terrain/Bad.cpp:5: [vulkan] #include <vulkan/vulkan.h>"
-    "engine/include/tessera/scene/Bad.h:4: [gpu-layer] #include \"tessera/gpu/Device.h\""
+    "engine/core/src/terrain/Bad.cpp:5: [vulkan] #include <vulkan/vulkan.h>"
+    "engine/core/include/tessera/scene/Bad.h:4: [gpu-layer] #include \"tessera/gpu/Device.h\""
+    "engine/core/include/tessera/backend/Bad.h:4: [library-order] #include \"tessera/subdiv/SubdivGpuMesh.h\""
+    "engine/gpu/src/Bad.cpp:4: [library-order] #include \"tessera/assets/GltfLoader.h\""
+    "engine/subdiv/src/Bad.cpp:4: [library-order] #include \"tessera/runtime/Options.h\""
+    "runtime/src/Bad.cpp:8: [library-order] #include \"tessera/cli/CommandLine.h\""
     "tools/heightgen/Bad.cpp:3: [vulkan] #include <volk.h>"
     "game_sample/Bad.cpp:3: [backend-header] #include \"HulldomainTessFactorPass.h\""
     "game_sample/Bad.cpp:4: [backend-header] #include \"../backends/common/GpuTerrain.h\""
@@ -32,11 +36,15 @@ set(expected
     "backends/null/NullBad.cpp:5: [backend-header] #include \"GpuTerrain.h\""
     "tests/content/Bad.cpp:3: [tool-source] #include \"../../tools/creature/src/Bvh.h\""
     "backends/r2vb/R2vbBad.cpp:10: [barrier] vkCmdPipelineBarrier")
-# Planted lines that break no rule: a commented-out include, the runtime's
+# Planted lines that break no rule: a commented-out include, a library's
+# use of the core below it, the runtime's
 # use of the GPU layer, a backend's own and the shared headers, the GPU tests,
 # a tool's public header.
 set(innocent
-    "engine/src/scene/Good.cpp:"
+    "engine/core/src/scene/Good.cpp:"
+    "engine/core/include/tessera/backend/Bad.h:5:"
+    "engine/gpu/src/Bad.cpp:5:"
+    "engine/subdiv/src/Bad.cpp:5:"
     "runtime/src/Bad.cpp:4:"
     "backends/r2vb/R2vbBad.cpp:4:"
     "backends/r2vb/R2vbBad.cpp:5:"

@@ -14,7 +14,7 @@ public:
     StubBackend(std::string name, std::string description)
         : mName(std::move(name)), mDescription(std::move(description)) {}
 
-    backend::BackendCapabilities capabilities(const backend::DeviceFeatures* device) override {
+    backend::BackendCapabilities capabilities(const device::DeviceFeatures* device) override {
         backend::BackendCapabilities caps = TemplateBackend::capabilities(device);
         caps.name = mName;
         caps.description = mDescription;

@@ -11,6 +11,7 @@
 
 using namespace tessera;
 using namespace tessera::backend;
+using tessera::device::DeviceFeatures;
 
 namespace {
 

@@ -1,10 +1,10 @@
-// --hide-features' parser and mask (backend::FeatureMask): names in, flags
+// --hide-features' parser and mask (device::FeatureMask): names in, flags
 // cleared, an unknown name refused with the known ones listed.
-#include "tessera/backend/FeatureMask.h"
+#include "tessera/device/FeatureMask.h"
 
 #include <gtest/gtest.h>
 
-using namespace tessera::backend;
+using namespace tessera::device;
 
 namespace {
 

@@ -7,7 +7,7 @@
 /// names its flag, documented in `tessera-demo --help`).
 
 #include "tessera/backend/CharacterDesc.h"
-#include "tessera/backend/FeatureMask.h"
+#include "tessera/device/FeatureMask.h"
 #include "tessera/backend/FrameInfo.h"
 #include "tessera/core/Result.h"
 #include "tessera/scene/CameraPose.h"
@@ -57,7 +57,7 @@ struct Options {
     uint64_t deviceMemoryCap = 0;
     /// --hide-features: device features the backends are told the device
     /// lacks (and that are not enabled on it).
-    backend::FeatureMask hiddenFeatures;
+    device::FeatureMask hiddenFeatures;
     /// Fault injection for the exhaustion tests (gpu::Device::failAllocation):
     /// the device allocation with this index fails. No flag sets it.
     std::optional<uint64_t> failAllocation;

@@ -1,0 +1,39 @@
+#pragma once
+/// @file CrowdMeshPass.h
+/// The middle and far tiers of an instanced crowd, the same draws on every
+/// backend: per (tier, creature) one indexed indirect draw of the cage or
+/// the far mesh (the per-vertex stream), instanced over the list's entries
+/// (the per-instance stream), skinned from the baked clips in
+/// crowd_mesh.vert. What differs per backend is how the lists and their
+/// instance counts were made (compute, transform feedback, render targets).
+
+#include "common/CrowdDescriptors.h"
+#include "common/GpuCrowd.h"
+#include "tessera/gpu/Pipeline.h"
+#include "tessera/gpu/PipelineLayout.h"
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace tessera::backends {
+
+class CrowdMeshPass {
+public:
+    CrowdMeshPass() = default;
+    /// `vertex` and `fragment` are the backend's crowd_mesh.vert and
+    /// character.frag crowd variants, reading the bindings of `mode`.
+    CrowdMeshPass(gpu::Device& device, CrowdDescriptors::Mode mode, std::span<const uint32_t> vertex,
+                  std::span<const uint32_t> fragment, VkFormat colorFormat, VkFormat depthFormat,
+                  const std::string& name);
+
+    /// Inside the main pass: GPU passes crowd.middle and crowd.far.
+    void record(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors);
+
+private:
+    gpu::Device* mDevice = nullptr;
+    gpu::PipelineLayout mLayout;
+    gpu::Pipeline mPipeline;
+};
+
+} // namespace tessera::backends

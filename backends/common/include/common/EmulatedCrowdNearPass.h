@@ -1,0 +1,36 @@
+#pragma once
+/// @file EmulatedCrowdNearPass.h
+/// An instanced crowd's near tier on the emulated backends (r2vb, streamout):
+/// each near slot tessellated at its own continuous level through the
+/// emulated tessellator's triangle patterns (TrianglePatternLibrary) and the
+/// Listing 8 evaluation vertex shader (crowd_near_emulated.vert). Per
+/// creature one multi-draw indirect over every slot's command; the backend's
+/// own passes wrote the slot records, the commands (tsCrowdNearCommand) and
+/// the slots' compressed cages, each with its generation's technique.
+
+#include "common/CrowdDescriptors.h"
+#include "common/GpuCrowd.h"
+#include "tessera/gpu/Pipeline.h"
+#include "tessera/gpu/PipelineLayout.h"
+
+#include <string>
+
+namespace tessera::backends {
+
+class EmulatedCrowdNearPass {
+public:
+    EmulatedCrowdNearPass() = default;
+    /// Descriptors pushed are CrowdDescriptors::Mode::Texels'.
+    EmulatedCrowdNearPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat,
+                          const std::string& backendName);
+
+    /// Inside the main pass: GPU pass crowd.near.
+    void record(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors);
+
+private:
+    gpu::Device* mDevice = nullptr;
+    gpu::PipelineLayout mLayout;
+    gpu::Pipeline mPipeline;
+};
+
+} // namespace tessera::backends

@@ -1,0 +1,137 @@
+#pragma once
+/// @file GpuCrowd.h
+/// An instanced crowd's GPU resources, shared by every backend's crowd
+/// (layouts in CrowdInstance.h): every creature's cage and far mesh in one
+/// vertex and one index buffer, the baked clips, the tier lists (instance
+/// streams of the middle and far draws), their indirect commands, the near
+/// tier's compressed-cage slots, the emulated near tier's slot records,
+/// commands and triangle patterns, and a ring of per-frame instance buffers.
+/// Each backend's culling and binning technique writes the lists, commands
+/// and slots through the usage it names at creation (storage, transform
+/// feedback or transfer); the LOD state is the technique's own.
+
+#include "tessera/shaders/CrowdInstance.h"
+#include "common/GpuCharacter.h"
+#include "tessera/backend/CrowdDesc.h"
+#include "tessera/core/Result.h"
+#include "tessera/gpu/Buffer.h"
+#include "tessera/gpu/BufferView.h"
+#include "tessera/gpu/Device.h"
+#include "tessera/gpu/FrameContext.h"
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace tessera::backends {
+
+class GpuCrowd {
+public:
+    /// One creature: its character (maps) and where its meshes sit.
+    struct Creature {
+        GpuCharacter* character = nullptr;
+        uint32_t cageFirstVertex = 0, cageFirstIndex = 0, cageTriangles = 0;
+        uint32_t farFirstVertex = 0, farFirstIndex = 0, farTriangles = 0;
+    };
+
+    /// `find` maps the desc's handles to the backend's characters;
+    /// `writeUsage` is how the backend's passes write the lists, the
+    /// commands and the near slots (added to their buffers' usage).
+    static Result<std::unique_ptr<GpuCrowd>> create(gpu::Device& device, const backend::CrowdDesc& desc,
+                                                    const std::function<GpuCharacter*(backend::CharacterHandle)>& find,
+                                                    VkBufferUsageFlags writeUsage);
+
+    const std::vector<Creature>& creatures() const { return mCreatures; }
+    uint32_t maxInstances() const { return mMaxInstances; }
+    uint32_t maxIds() const { return mMaxIds; }
+    uint32_t nearSlots() const { return mNearSlots; }
+    uint32_t nearStride() const { return mNearStride; }
+    uint32_t clipCount() const { return mClipCount; }
+    /// Largest cage triangle count: a near slot's instance stride on the emulated backends.
+    uint32_t triangleStride() const { return mTriangleStride; }
+
+    gpu::Buffer& vertices() { return mVertices; }
+    gpu::Buffer& indices() { return mIndices; }
+    gpu::Buffer& bakedMatrices() { return mBaked; }
+    VkBufferView bakedView() const { return mBakedView.handle(); }
+    gpu::Buffer& clips() { return mClips; }
+    gpu::Buffer& state() { return mState; }
+    gpu::Buffer& lists() { return mLists; }
+    gpu::Buffer& args() { return mArgs; }
+    gpu::Buffer& nearCages() { return mNear; }
+    gpu::Buffer& nearOwners() { return mNearOwners; }
+    /// The emulated near tier: a CrowdNearSlot per slot, and per creature
+    /// and slot an indexed indirect command (tsCrowdNearCommandBase).
+    gpu::Buffer& nearSlotRecords() { return mNearSlotRecords; }
+    gpu::Buffer& nearCommands() { return mNearCommands; }
+    /// The triangle pattern library (TrianglePatternLibrary): point codes
+    /// (a vertex stream) and indices.
+    gpu::Buffer& patternCodes() { return mPatternCodes; }
+    gpu::Buffer& patternIndices() { return mPatternIndices; }
+    /// Texel views for the emulated backends' shaders.
+    VkBufferView indicesView() const { return mIndicesView.handle(); }
+    /// The middle and far tiers' baked vertex animation and its per-clip table.
+    VkBufferView bakedVerticesView() const { return mBakedVerticesView.handle(); }
+    VkBufferView clipMeshesView() const { return mClipMeshesView.handle(); }
+    VkBufferView clipsView() const { return mClipsView.handle(); }
+    VkBufferView nearCagesView() const { return mNearView.handle(); }
+    VkBufferView nearSlotsView() const { return mNearSlotsView.handle(); }
+    VkBufferView instancesView(uint32_t slot) const { return mInstancesView[slot].handle(); }
+    /// The frame slot's instance buffer (host-visible), sorted by creature.
+    gpu::Buffer& instances(uint32_t slot) { return mInstances[slot]; }
+    /// Where creature c's instances lie in the frame slot's buffer: first
+    /// and count (uploadInstances sorts them by creature, stably).
+    const std::vector<glm::uvec2>& creatureRanges(uint32_t slot) const { return mRanges[slot]; }
+    /// The host's index of the frame slot's instance i (as drawCrowd got them).
+    uint32_t hostIndex(uint32_t slot, uint32_t i) const { return mHostIndex[slot][i]; }
+    /// The frame slot's copy of the indirect commands, read back when the
+    /// slot comes round again (the tier counts of FrameReport).
+    gpu::Buffer& argsReadback(uint32_t slot) { return mArgsReadback[slot]; }
+    bool argsWritten(uint32_t slot) const { return mArgsWritten[slot]; }
+    void setArgsWritten(uint32_t slot) { mArgsWritten[slot] = true; }
+
+    /// Copies the valid ones of `instances` (backend::crowdInstanceValid)
+    /// into the frame slot's buffer, sorted by creature (stable), and returns
+    /// how many.
+    uint32_t uploadInstances(uint32_t slot, std::span<const shader::CrowdInstance> instances);
+    /// Maps lists of the last uploaded frame's instance indices back to the host's.
+    backend::CrowdTiers toHostIndices(backend::CrowdTiers tiers) const;
+    /// The frame slot uploadInstances filled last.
+    uint32_t lastSlot() const { return mLastSlot; }
+    /// The uniform block for a frame.
+    shader::CrowdUniforms uniforms(const backend::CrowdDrawInfo& draw, uint32_t instanceCount) const;
+    /// The indirect commands as every frame starts them: each list's mesh,
+    /// no instances; the near dispatch empty.
+    const std::vector<uint32_t>& initialArgs() const { return mInitialArgs; }
+
+    /// Whether the state still needs its first fill (TS_LOD_NONE for every id).
+    bool stateCleared() const { return mStateCleared; }
+    void setStateCleared() { mStateCleared = true; }
+
+    /// Device bytes of everything above, for FrameReport::intermediateBytes.
+    uint64_t bytes() const;
+
+private:
+    GpuCrowd() = default;
+
+    std::vector<Creature> mCreatures;
+    std::vector<float> mLevelPerPixel;
+    uint32_t mMaxInstances = 0, mMaxIds = 0, mNearSlots = 0, mNearStride = 0, mClipCount = 0, mTriangleStride = 0;
+    std::vector<uint32_t> mFarVertices; ///< per creature
+    gpu::Buffer mVertices, mIndices, mBaked, mClips, mState, mLists, mArgs, mNear, mNearOwners;
+    gpu::Buffer mNearSlotRecords, mNearCommands, mPatternCodes, mPatternIndices, mBakedVertices, mClipMeshes;
+    gpu::BufferView mBakedView, mIndicesView, mClipsView, mNearView, mNearSlotsView, mBakedVerticesView,
+        mClipMeshesView;
+    std::array<gpu::Buffer, gpu::kFramesInFlight> mInstances;
+    std::array<gpu::BufferView, gpu::kFramesInFlight> mInstancesView;
+    std::array<std::vector<glm::uvec2>, gpu::kFramesInFlight> mRanges;
+    std::array<std::vector<uint32_t>, gpu::kFramesInFlight> mHostIndex;
+    std::array<gpu::Buffer, gpu::kFramesInFlight> mArgsReadback;
+    std::array<bool, gpu::kFramesInFlight> mArgsWritten{};
+    std::vector<uint32_t> mInitialArgs;
+    bool mStateCleared = false;
+    uint32_t mLastSlot = 0;
+};
+
+} // namespace tessera::backends

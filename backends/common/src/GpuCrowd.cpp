@@ -1,0 +1,261 @@
+#include "common/GpuCrowd.h"
+
+#include "tessera/backend/CrowdChecks.h"
+#include "tessera/character/BakedAnimation.h"
+#include "tessera/character/BakedVertices.h"
+#include "tessera/tessellator/TrianglePatternLibrary.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace tessera::backends {
+
+Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const backend::CrowdDesc& desc,
+                                                   const std::function<GpuCharacter*(backend::CharacterHandle)>& find,
+                                                   VkBufferUsageFlags writeUsage) {
+    if (Status ok = backend::checkCrowdDesc(desc); !ok) return ok.error();
+    const character::BakedAnimation& baked = *desc.animation;
+    const uint32_t texelLimit = device.properties().limits.maxTexelBufferElements;
+    if (baked.texelCount() > texelLimit)
+        return Error{"createCrowd: the baked clips need " + std::to_string(baked.texelCount()) +
+                     " texels, more than this device's maxTexelBufferElements (" + std::to_string(texelLimit) + ")"};
+
+    std::unique_ptr<GpuCrowd> crowd(new GpuCrowd());
+    crowd->mMaxInstances = desc.maxInstances;
+    crowd->mMaxIds = desc.maxIds;
+    crowd->mNearSlots = std::max(desc.nearSlots, 1u);
+    crowd->mClipCount = uint32_t(baked.clips.size());
+
+    // Every creature's cage, then its far mesh, in one vertex and one index
+    // buffer: one binding serves every list's draw.
+    std::vector<shader::CharacterVertex> vertices;
+    std::vector<uint32_t> indices;
+    for (size_t i = 0; i < desc.characters.size(); ++i) {
+        const backend::CrowdCharacterDesc& c = desc.characters[i];
+        GpuCharacter* character = find(c.character);
+        if (!character)
+            return Error{"createCrowd: character " + std::to_string(i) + " (handle " + std::to_string(c.character.id) +
+                         ") does not exist"};
+        const uint32_t palette = character->paletteSize();
+        const uint32_t clipBase = baked.characterClipBase[i];
+        if (clipBase >= baked.clips.size() || baked.clips[clipBase].frames.z != palette)
+            return Error{"createCrowd: " + character->name() + " has " + std::to_string(palette) +
+                         " skinning matrices; its baked clips do not"};
+        auto far = GpuCharacter::convertVertices(*c.farMesh, palette, character->name() + " far mesh");
+        if (!far) return far.error();
+        for (uint32_t index : c.farMesh->indices)
+            if (index >= c.farMesh->vertices.size())
+                return Error{"createCrowd: " + character->name() + " far mesh: index " + std::to_string(index) +
+                             " out of range"};
+        Creature creature;
+        creature.character = character;
+        creature.cageFirstVertex = uint32_t(vertices.size());
+        creature.cageFirstIndex = uint32_t(indices.size());
+        creature.cageTriangles = character->triangleCount();
+        vertices.insert(vertices.end(), character->gpuVertices().begin(), character->gpuVertices().end());
+        indices.insert(indices.end(), character->cageIndices().begin(), character->cageIndices().end());
+        creature.farFirstVertex = uint32_t(vertices.size());
+        creature.farFirstIndex = uint32_t(indices.size());
+        creature.farTriangles = c.farMesh->triangleCount();
+        vertices.insert(vertices.end(), far.value().begin(), far.value().end());
+        indices.insert(indices.end(), c.farMesh->indices.begin(), c.farMesh->indices.end());
+        crowd->mCreatures.push_back(creature);
+        crowd->mLevelPerPixel.push_back(c.levelPerPixel);
+        crowd->mNearStride = std::max(crowd->mNearStride, character->vertexCount());
+        crowd->mTriangleStride = std::max(crowd->mTriangleStride, creature.cageTriangles);
+    }
+
+    // The middle and far tiers' baked vertex animation: each creature's
+    // cage and far mesh skinned at every baked frame of its clips, packed
+    // with its character's box and uv range (the GPU unpacks with them).
+    std::vector<glm::uvec4> bakedVertices;
+    std::vector<glm::uvec4> clipMeshes(baked.clips.size(), glm::uvec4(0));
+    for (size_t i = 0; i < desc.characters.size(); ++i) {
+        const GpuCharacter& k = *crowd->mCreatures[i].character;
+        const character::PackingRange range{k.boxMin(), k.boxMax(), glm::vec2(k.uvRange()),
+                                            glm::vec2(k.uvRange().z, k.uvRange().w)};
+        const uint32_t first = baked.characterClipBase[i];
+        const uint32_t end =
+            i + 1 < desc.characters.size() ? baked.characterClipBase[i + 1] : uint32_t(baked.clips.size());
+        const auto cage =
+            character::appendBakedVertices(*desc.characters[i].cage, baked, first, end, range, bakedVertices);
+        const auto far =
+            character::appendBakedVertices(*desc.characters[i].farMesh, baked, first, end, range, bakedVertices);
+        for (uint32_t c = first; c < end; ++c) clipMeshes[c] = glm::uvec4(cage[c - first], far[c - first], 0u, 0u);
+        crowd->mFarVertices.push_back(uint32_t(desc.characters[i].farMesh->vertices.size()));
+    }
+    if (bakedVertices.size() > texelLimit)
+        return Error{"createCrowd: the baked vertex animation needs " + std::to_string(bakedVertices.size()) +
+                     " texels, more than this device's maxTexelBufferElements (" + std::to_string(texelLimit) + ")"};
+
+    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    const VkBufferUsageFlags texels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+    const VkBufferUsageFlags dst = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    const VkBufferUsageFlags src = VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    const VkBufferUsageFlags vertex = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT;
+    const VkBufferUsageFlags written = writeUsage | dst | src;
+    auto whole = [](const gpu::Buffer& b) { return b.size(); };
+    crowd->mVertices = gpu::Buffer(device, vertices.size() * sizeof(shader::CharacterVertex), storage | vertex,
+                                   gpu::MemoryUsage::GpuOnly, "crowd.vertices");
+    crowd->mVertices.upload(std::span<const shader::CharacterVertex>(vertices));
+    crowd->mIndices = gpu::Buffer(device, indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | texels,
+                                  gpu::MemoryUsage::GpuOnly, "crowd.indices");
+    crowd->mIndices.upload(std::span<const uint32_t>(indices));
+    crowd->mIndicesView =
+        gpu::BufferView(device, crowd->mIndices, VK_FORMAT_R32_UINT, 0, whole(crowd->mIndices), "crowd.indices.texels");
+    crowd->mBaked = gpu::Buffer(device, baked.rows.size() * sizeof(glm::vec4), texels, gpu::MemoryUsage::GpuOnly,
+                                "crowd.bakedMatrices");
+    crowd->mBaked.upload(std::span<const glm::vec4>(baked.rows));
+    crowd->mBakedView = gpu::BufferView(device, crowd->mBaked, VK_FORMAT_R32G32B32A32_SFLOAT, 0,
+                                        baked.rows.size() * sizeof(glm::vec4), "crowd.bakedMatrices.texels");
+    crowd->mClips = gpu::Buffer(device, baked.clips.size() * sizeof(shader::BakedClip), storage | texels,
+                                gpu::MemoryUsage::GpuOnly, "crowd.clips");
+    crowd->mClips.upload(std::span<const shader::BakedClip>(baked.clips));
+    crowd->mClipsView = gpu::BufferView(device, crowd->mClips, VK_FORMAT_R32G32B32A32_UINT, 0, whole(crowd->mClips),
+                                        "crowd.clips.texels");
+    crowd->mState = gpu::Buffer(device, VkDeviceSize(desc.maxIds) * sizeof(uint32_t), storage | dst,
+                                gpu::MemoryUsage::GpuOnly, "crowd.lodState");
+    crowd->mLists =
+        gpu::Buffer(device,
+                    VkDeviceSize(TS_LOD_TIERS) * crowd->mCreatures.size() * desc.maxInstances *
+                        sizeof(shader::CrowdListEntry),
+                    written | vertex, gpu::MemoryUsage::GpuOnly, "crowd.tierLists");
+    crowd->mArgs =
+        gpu::Buffer(device, TS_CROWD_ARG_WORDS * sizeof(uint32_t), written | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                    gpu::MemoryUsage::GpuOnly, "crowd.indirect");
+    crowd->mNear = gpu::Buffer(device, VkDeviceSize(crowd->mNearSlots) * crowd->mNearStride * 16, written | texels,
+                               gpu::MemoryUsage::GpuOnly, "crowd.nearCages");
+    crowd->mNearView = gpu::BufferView(device, crowd->mNear, VK_FORMAT_R32G32B32A32_UINT, 0, whole(crowd->mNear),
+                                       "crowd.nearCages.texels");
+    crowd->mNearOwners = gpu::Buffer(device, VkDeviceSize(crowd->mNearSlots) * sizeof(glm::uvec2), storage,
+                                     gpu::MemoryUsage::GpuOnly, "crowd.nearSlots");
+    crowd->mNearSlotRecords = gpu::Buffer(device, VkDeviceSize(crowd->mNearSlots) * sizeof(shader::CrowdNearSlot),
+                                          written | texels, gpu::MemoryUsage::GpuOnly, "crowd.nearSlotRecords");
+    crowd->mNearSlotsView = gpu::BufferView(device, crowd->mNearSlotRecords, VK_FORMAT_R32G32B32A32_UINT, 0,
+                                            whole(crowd->mNearSlotRecords), "crowd.nearSlotRecords.texels");
+    crowd->mNearCommands = gpu::Buffer(
+        device,
+        VkDeviceSize(crowd->mCreatures.size()) * crowd->mNearSlots * TS_CROWD_NEAR_COMMAND_WORDS * sizeof(uint32_t),
+        written | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly, "crowd.nearCommands");
+    crowd->mBakedVertices = gpu::Buffer(device, bakedVertices.size() * sizeof(glm::uvec4), texels,
+                                        gpu::MemoryUsage::GpuOnly, "crowd.bakedVertices");
+    crowd->mBakedVertices.upload(std::span<const glm::uvec4>(bakedVertices));
+    crowd->mBakedVerticesView = gpu::BufferView(device, crowd->mBakedVertices, VK_FORMAT_R32G32B32A32_UINT, 0,
+                                                whole(crowd->mBakedVertices), "crowd.bakedVertices.texels");
+    crowd->mClipMeshes = gpu::Buffer(device, clipMeshes.size() * sizeof(glm::uvec4), texels, gpu::MemoryUsage::GpuOnly,
+                                     "crowd.clipMeshes");
+    crowd->mClipMeshes.upload(std::span<const glm::uvec4>(clipMeshes));
+    crowd->mClipMeshesView = gpu::BufferView(device, crowd->mClipMeshes, VK_FORMAT_R32G32B32A32_UINT, 0,
+                                             whole(crowd->mClipMeshes), "crowd.clipMeshes.texels");
+    const tessellator::TrianglePatternLibrary& patterns = tessellator::TrianglePatternLibrary::fractionalOdd();
+    crowd->mPatternCodes =
+        gpu::Buffer(device, patterns.codes().size_bytes(), vertex, gpu::MemoryUsage::GpuOnly, "crowd.nearPatternCodes");
+    crowd->mPatternCodes.upload(patterns.codes());
+    crowd->mPatternIndices = gpu::Buffer(device, patterns.indices().size_bytes(), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                                         gpu::MemoryUsage::GpuOnly, "crowd.nearPatternIndices");
+    crowd->mPatternIndices.upload(patterns.indices());
+    for (uint32_t slot = 0; slot < gpu::kFramesInFlight; ++slot) {
+        // (Built in steps: GCC 12 warns falsely on "[" + to_string + "]".)
+        std::string tag = "[";
+        tag += std::to_string(slot);
+        tag += ']';
+        crowd->mInstances[slot] = gpu::Buffer(device, VkDeviceSize(desc.maxInstances) * sizeof(shader::CrowdInstance),
+                                              storage | texels, gpu::MemoryUsage::CpuToGpu, "crowd.instances" + tag);
+        crowd->mInstancesView[slot] = gpu::BufferView(device, crowd->mInstances[slot], VK_FORMAT_R32G32B32A32_UINT, 0,
+                                                      whole(crowd->mInstances[slot]), "crowd.instances.texels" + tag);
+        crowd->mArgsReadback[slot] = gpu::Buffer(device, TS_CROWD_ARG_WORDS * sizeof(uint32_t), dst,
+                                                 gpu::MemoryUsage::GpuToCpu, "crowd.indirectReadback" + tag);
+    }
+
+    // Each list draws its creature's mesh: the cage (near, middle) or the
+    // far mesh; firstInstance is the list's region, so the instance stream
+    // (or gl_InstanceIndex) is the entry. Indices stay local to the mesh
+    // (vertexOffset 0): every tier fetches its vertices by local index, the
+    // near tier from its compressed cage, the others from the baked vertex
+    // animation.
+    std::vector<uint32_t>& args = crowd->mInitialArgs;
+    args.assign(TS_CROWD_ARG_WORDS, 0u);
+    for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier)
+        for (uint32_t c = 0; c < crowd->mCreatures.size(); ++c) {
+            const Creature& k = crowd->mCreatures[c];
+            uint32_t* cmd = &args[(tier * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS];
+            const bool far = tier == TS_LOD_FAR;
+            cmd[0] = 3 * (far ? k.farTriangles : k.cageTriangles);
+            cmd[1] = 0;
+            cmd[2] = far ? k.farFirstIndex : k.cageFirstIndex;
+            cmd[3] = 0;
+            cmd[4] = shader::tsCrowdListBase(tier, c, uint32_t(crowd->mCreatures.size()), desc.maxInstances);
+        }
+    args[TS_CROWD_ARG_DISPATCH + 1] = 1;
+    args[TS_CROWD_ARG_DISPATCH + 2] = 1;
+    return crowd;
+}
+
+uint32_t GpuCrowd::uploadInstances(uint32_t slot, std::span<const shader::CrowdInstance> instances) {
+    // A counting sort by creature: the emulated techniques cull and rank
+    // each creature's instances as one contiguous range.
+    mLastSlot = slot;
+    const uint32_t creatures = uint32_t(mCreatures.size());
+    std::vector<glm::uvec2>& ranges = mRanges[slot];
+    ranges.assign(creatures, glm::uvec2(0));
+    std::vector<uint32_t> valid;
+    valid.reserve(std::min<size_t>(instances.size(), mMaxInstances));
+    for (uint32_t i = 0; i < instances.size() && valid.size() < mMaxInstances; ++i)
+        if (backend::crowdInstanceValid(instances[i], mMaxIds, creatures, mClipCount)) {
+            valid.push_back(i);
+            ++ranges[instances[i].ids.y].y;
+        }
+    for (uint32_t c = 1; c < creatures; ++c) ranges[c].x = ranges[c - 1].x + ranges[c - 1].y;
+    std::vector<uint32_t> next(creatures);
+    for (uint32_t c = 0; c < creatures; ++c) next[c] = ranges[c].x;
+    auto* out = static_cast<shader::CrowdInstance*>(mInstances[slot].mapped());
+    std::vector<uint32_t>& host = mHostIndex[slot];
+    host.resize(valid.size());
+    for (uint32_t i : valid) {
+        const uint32_t at = next[instances[i].ids.y]++;
+        out[at] = instances[i];
+        host[at] = i;
+    }
+    return uint32_t(valid.size());
+}
+
+backend::CrowdTiers GpuCrowd::toHostIndices(backend::CrowdTiers tiers) const {
+    const std::vector<uint32_t>& host = mHostIndex[mLastSlot];
+    for (auto& list : tiers.instances)
+        for (uint32_t& i : list) i = i < host.size() ? host[i] : UINT32_MAX;
+    return tiers;
+}
+
+shader::CrowdUniforms GpuCrowd::uniforms(const backend::CrowdDrawInfo& draw, uint32_t instanceCount) const {
+    shader::CrowdUniforms u{};
+    u.lod = draw.lod;
+    for (size_t c = 0; c < mCreatures.size(); ++c) {
+        const GpuCharacter& k = *mCreatures[c].character;
+        shader::CrowdCharacter& out = u.characters[c];
+        out.boxMin = glm::vec4(k.boxMin(), mLevelPerPixel[c]);
+        out.boxMax = glm::vec4(k.boxMax(), k.negativeHandedness() ? 1.0f : 0.0f);
+        out.uvRange = k.uvRange();
+        out.displacement = glm::vec4(k.displacementScale(), k.displacementBias(), 1.0f, 0.0f);
+        const Creature& m = mCreatures[c];
+        out.mesh = glm::uvec4(m.cageFirstVertex, k.vertexCount(), m.farFirstVertex, mFarVertices[c]);
+        out.indices = glm::uvec4(m.cageFirstIndex, m.cageTriangles, m.farFirstIndex, m.farTriangles);
+    }
+    const auto classes = tessellator::TrianglePatternLibrary::fractionalOdd().classes();
+    for (size_t k = 0; k < classes.size() && k < TS_EMU_TRIANGLE_CLASSES; ++k)
+        u.nearPatterns[k] = glm::uvec4(classes[k].firstIndex, classes[k].indexCount, classes[k].firstCode, 0u);
+    u.emulated = glm::uvec4(mTriangleStride, 0u, 0u, 0u);
+    u.counts = glm::uvec4(instanceCount, uint32_t(mCreatures.size()), mNearSlots, mMaxInstances);
+    u.flags = glm::uvec4(draw.displacement ? 1u : 0u, draw.lodColors ? 1u : 0u, mNearStride, mMaxIds);
+    return u;
+}
+
+uint64_t GpuCrowd::bytes() const {
+    uint64_t total = mVertices.size() + mIndices.size() + mBaked.size() + mClips.size() + mState.size() +
+                     mBakedVertices.size() + mClipMeshes.size() + mLists.size() + mArgs.size() + mNear.size() +
+                     mNearOwners.size() + mNearSlotRecords.size() + mNearCommands.size() + mPatternCodes.size() +
+                     mPatternIndices.size();
+    for (const gpu::Buffer& b : mInstances) total += b.size();
+    return total;
+}
+
+} // namespace tessera::backends
