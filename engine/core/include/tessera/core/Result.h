@@ -9,14 +9,32 @@
 
 #include <cassert>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 
 namespace tessera {
 
 /// A failure with a message meant for the person running the program.
+///
+/// Libraries speak their own language: a message about one of the caller's
+/// settings names the setting in the library's words ("terrain mode lowres:
+/// backend r2vb draws only ..."), never a host's spelling of it such as a
+/// command-line flag. `setting` then holds those words, at the start of the
+/// message, so a host that takes the setting under another name puts its
+/// own in their place (naming()).
 struct Error {
     std::string message;
+    /// The setting the message is about, as the message begins with it;
+    /// empty when it is about none.
+    std::string setting = {};
+
+    /// The message with its leading `setting` replaced by `name` (the demo's
+    /// "--terrain-mode"); the message itself when it names no setting.
+    std::string naming(std::string_view name) const {
+        if (setting.empty() || message.compare(0, setting.size(), setting) != 0) return message;
+        return std::string(name) + message.substr(setting.size());
+    }
 };
 
 /// Either a value of type T or an Error. Cheap to move; never throws on access
@@ -68,6 +86,16 @@ Error fail(Parts&&... parts) {
     std::string message;
     (message.append(std::forward<Parts>(parts)), ...);
     return Error{std::move(message)};
+}
+
+/// An Error about the caller's setting `setting`, named in the library's
+/// words: `failSetting("terrain mode", " lowres: backend r2vb ...")` makes
+/// "terrain mode lowres: backend r2vb ..." with setting "terrain mode".
+template <class... Parts>
+Error failSetting(std::string setting, Parts&&... parts) {
+    Error error = fail(setting, std::forward<Parts>(parts)...);
+    error.setting = std::move(setting);
+    return error;
 }
 
 } // namespace tessera
