@@ -6,6 +6,7 @@
 // edited accessors, a truncated, zeroed or bit-flipped payload, wrong
 // attribute ids.
 #include "tessera/assets/GltfLoader.h"
+#include "tessera/core/Random.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -16,7 +17,6 @@
 #include <functional>
 #include <iostream>
 #include <iterator>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -144,17 +144,15 @@ TEST(DracoStrict, BitFlipsAreRejectedOrDecodeToTheDeclaredMesh) {
     const auto payload = readBytes(kDuck / "Duck.bin");
     auto original = tessera::assets::loadCharacter(kDuck / "Duck.gltf");
     ASSERT_TRUE(original.ok()) << original.error().message;
-    std::mt19937 random(17);
-    std::uniform_int_distribution<size_t> byte(0, 10366 - 1);
-    std::uniform_int_distribution<int> bit(0, 7);
+    tessera::Random random(17);
     int rejected = 0, accepted = 0;
     for (int trial = 0; trial < 160; ++trial) {
         auto damaged = payload;
         const int flips = 1 + trial % 4;
         std::string what = "flips";
         for (int f = 0; f < flips; ++f) {
-            const size_t at = byte(random);
-            const int b = bit(random);
+            const size_t at = random.below(10366);
+            const int b = int(random.below(8));
             damaged[at] = char(damaged[at] ^ (1 << b));
             what += " " + std::to_string(at) + ":" + std::to_string(b);
         }

@@ -1,6 +1,7 @@
 // Terrain::cull: the min/max pyramid walk finds exactly the patches whose true
 // displaced bounds meet the frustum, as testing every patch would.
 
+#include "tessera/core/Random.h"
 #include "tessera/scene/Camera.h"
 #include "tessera/terrain/Terrain.h"
 
@@ -37,16 +38,6 @@ uint16_t flat(uint32_t, uint32_t) {
 uint16_t spike(uint32_t i, uint32_t j) {
     return i == 128 && j == 150 ? uint16_t(65535u * 550u / 600u) : 0;
 }
-
-// Deterministic floats in [0, 1) for random cameras (no std distributions,
-// whose output differs between standard libraries).
-struct Random {
-    uint64_t state;
-    float next() {
-        state = state * 6364136223846793005ull + 1442695040888963407ull;
-        return float(state >> 40) * 0x1.0p-24f;
-    }
-};
 
 std::vector<uint32_t> bruteForce(const Terrain& t, const scene::Frustum& frustum) {
     std::vector<uint32_t> visible;
@@ -119,15 +110,16 @@ TEST(TerrainCull, ATallPeakKeepsItsPatchWhenTheBaseIsOutOfView) {
 TEST(TerrainCull, MatchesBruteForceForRandomCameras) {
     for (uint32_t patchesPerSide : {8u, 5u, 13u}) {
         Terrain t(makeField(hills), patchesPerSide);
-        Random random{42};
+        // The core's generator: the same cameras with every standard library.
+        Random random(42);
         uint32_t nonEmpty = 0, partial = 0;
         for (int trial = 0; trial < 200; ++trial) {
-            const glm::vec3 position{-300.0f + 1600.0f * random.next(), 50.0f + 900.0f * random.next(),
-                                     -300.0f + 1600.0f * random.next()};
-            const float yaw = 6.2831853f * random.next();
-            const float pitch = glm::radians(-85.0f + 100.0f * random.next());
+            const glm::vec3 position{-300.0f + 1600.0f * random.nextFloat(), 50.0f + 900.0f * random.nextFloat(),
+                                     -300.0f + 1600.0f * random.nextFloat()};
+            const float yaw = 6.2831853f * random.nextFloat();
+            const float pitch = glm::radians(-85.0f + 100.0f * random.nextFloat());
             scene::Camera camera = makeCamera({position, yaw, pitch});
-            camera.setClipPlanes(0.5f, 200.0f + 2000.0f * random.next());
+            camera.setClipPlanes(0.5f, 200.0f + 2000.0f * random.nextFloat());
             const auto visible = cullSorted(t, camera);
             EXPECT_EQ(visible, bruteForce(t, camera.frustum())) << "P " << patchesPerSide << " trial " << trial;
             nonEmpty += !visible.empty();
