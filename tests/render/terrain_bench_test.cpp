@@ -5,8 +5,8 @@
 #include "TestFiles.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
-#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -33,82 +33,23 @@ std::string joined(const std::vector<std::string>& args) {
     return text;
 }
 
-void skipSpace(const std::string& s, size_t& at) {
-    while (at < s.size() && std::isspace(static_cast<unsigned char>(s[at]))) ++at;
-}
-
-bool parseString(const std::string& s, size_t& at, std::string& out) {
-    if (at >= s.size() || s[at] != '"') return false;
-    out.clear();
-    for (++at; at < s.size() && s[at] != '"'; ++at) {
-        if (s[at] == '\\' && at + 1 < s.size()) ++at;
-        out += s[at];
-    }
-    if (at >= s.size()) return false;
-    ++at;
-    return true;
-}
-
 /// Parses a JSON list of flat objects whose values are strings or numbers;
 /// returns false (with `error`) on anything else.
 bool parseRecords(const std::string& s, std::vector<Record>& records, std::string& error) {
-    size_t at = 0;
-    skipSpace(s, at);
-    if (at >= s.size() || s[at] != '[') return error = "does not start with '['", false;
-    ++at;
-    skipSpace(s, at);
-    if (at < s.size() && s[at] == ']') return true;
-    while (true) {
-        skipSpace(s, at);
-        if (at >= s.size() || s[at] != '{') return error = "expected '{' at " + std::to_string(at), false;
-        ++at;
+    const nlohmann::json list = nlohmann::json::parse(s, nullptr, /*allow_exceptions=*/false);
+    if (list.is_discarded()) return error = "not JSON", false;
+    if (!list.is_array()) return error = "not a list", false;
+    for (const nlohmann::json& object : list) {
+        if (!object.is_object()) return error = "a list item is not an object", false;
         Record record;
-        while (true) {
-            skipSpace(s, at);
-            std::string key, value;
-            if (!parseString(s, at, key)) return error = "expected a key at " + std::to_string(at), false;
-            skipSpace(s, at);
-            if (at >= s.size() || s[at] != ':') return error = "expected ':' after \"" + key + "\"", false;
-            ++at;
-            skipSpace(s, at);
-            if (at < s.size() && s[at] == '"') {
-                if (!parseString(s, at, value)) return error = "bad string for \"" + key + "\"", false;
-            } else {
-                const size_t start = at;
-                while (at < s.size() && s[at] != ',' && s[at] != '}' &&
-                       !std::isspace(static_cast<unsigned char>(s[at])))
-                    ++at;
-                value = s.substr(start, at - start);
-                char* end = nullptr;
-                std::strtod(value.c_str(), &end);
-                if (value.empty() || *end != '\0') return error = "\"" + key + "\" is not a number: " + value, false;
-            }
-            record[key] = value;
-            skipSpace(s, at);
-            if (at < s.size() && s[at] == ',') {
-                ++at;
-                continue;
-            }
-            if (at < s.size() && s[at] == '}') {
-                ++at;
-                break;
-            }
-            return error = "expected ',' or '}' at " + std::to_string(at), false;
+        for (const auto& [key, value] : object.items()) {
+            if (value.is_string()) record[key] = value.get<std::string>();
+            else if (value.is_number()) record[key] = value.dump();
+            else return error = "\"" + key + "\" is not a string or a number", false;
         }
         records.push_back(std::move(record));
-        skipSpace(s, at);
-        if (at < s.size() && s[at] == ',') {
-            ++at;
-            continue;
-        }
-        if (at < s.size() && s[at] == ']') {
-            ++at;
-            skipSpace(s, at);
-            if (at != s.size()) return error = "text after the list", false;
-            return true;
-        }
-        return error = "expected ',' or ']' at " + std::to_string(at), false;
     }
+    return true;
 }
 
 double number(const Record& r, const std::string& key) {
