@@ -91,8 +91,8 @@ Result<terrain::CraterSplat> parseSplat(const std::string& text) {
     terrain::CraterSplat splat;
     splat.center = {values[0], values[1]};
     splat.radius = values[2];
-    splat.profile.depth = values.size() == 4 ? values[3] : 0.22f * values[2];
-    splat.profile.rimHeight = 0.06f * values[2];
+    splat.profile = terrain::scaledCraterProfile(values[2]);
+    if (values.size() == 4) splat.profile.depth = values[3];
     return splat;
 }
 

@@ -20,6 +20,8 @@ std::pair<uint32_t, uint32_t> axisRange(float center, float radius, float spacin
 
 } // namespace
 
+CraterProfile scaledCraterProfile(float radius) { return {0.22f * radius, 0.06f * radius, 0.7f}; }
+
 SampleRect craterSamples(const HeightField& field, const CraterSplat& splat) {
     // `!(radius > 0)` also rejects a NaN radius.
     if (!(splat.radius > 0.0f) || !std::isfinite(splat.center.x) || !std::isfinite(splat.center.y)) return {};

@@ -44,9 +44,7 @@ std::vector<MeteorImpact> scheduleMeteorShower(const MeteorShowerSettings& setti
         impact.splat.center = {clampOrCentre(centre.x, settings.regionMin.x + radius, settings.regionMax.x - radius),
                                clampOrCentre(centre.y, settings.regionMin.y + radius, settings.regionMax.y - radius)};
         impact.splat.radius = radius;
-        // Depth and rim scale with the radius, so every crater has the same
-        // shape: a bowl about a ninth as deep as it is wide, with a low lip.
-        impact.splat.profile = {0.22f * radius, 0.06f * radius, 0.7f};
+        impact.splat.profile = scaledCraterProfile(radius);
         impacts.push_back(impact);
     }
     // Already in order for any duration >= 0; a negative one is sorted too,

@@ -17,6 +17,12 @@ struct CraterProfile {
     float rimAt = 0.7f;      ///< rim position as a fraction of the radius, in (0, 1)
 };
 
+/// The shape of a crater `radius` metres wide: a bowl 0.22 r deep, about a
+/// ninth as deep as it is wide, with a rim 0.06 r high at 0.7 r. Meteor
+/// impacts and the host's own craters (the demo's --splat) take it, so every
+/// crater has the same shape whatever its size.
+CraterProfile scaledCraterProfile(float radius);
+
 /// One splat: a crater of `radius` metres centred at world (x, z) = center.
 struct CraterSplat {
     glm::vec2 center{0.0f};

@@ -34,7 +34,7 @@ struct MeteorShowerSettings {
 /// at time t (the demo aims ahead of the camera so the craters appear in
 /// view). The same settings always give the same impacts on every platform
 /// (the core's `Random`; no std distributions, whose output varies by
-/// library). Crater depth scales with radius.
+/// library). Every crater has scaledCraterProfile's shape for its radius.
 std::vector<MeteorImpact> scheduleMeteorShower(const MeteorShowerSettings& settings,
                                                const std::function<glm::vec2(double)>& aimAt);
 
