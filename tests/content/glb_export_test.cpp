@@ -6,8 +6,9 @@
 #include "creature/CreatureGenerator.h"
 #include "creature/GlbExporter.h"
 
+#include "tessera/core/ImageFile.h"
+
 #include <gtest/gtest.h>
-#include <stb_image.h>
 
 #include <algorithm>
 #include <array>
@@ -238,24 +239,12 @@ TEST(GlbExport, SkinAnimationsAndMapsAreExact) {
             const auto& image = doc["images"][doc["textures"][textures[m]]["source"].get<size_t>()];
             EXPECT_EQ(image["mimeType"], "image/png");
             std::vector<uint8_t> png = tessera::test::bufferViewBytes(*file, image["bufferView"].get<size_t>());
-            // stb_image, the code base's one PNG decoder (the loader's).
+            // The code base's one image decoder (the loader's).
             const bool r16 = maps[m]->format == tessera::character::TextureFormat::R16;
-            int width = 0, height = 0, channels = 0;
-            std::vector<uint8_t> texels;
-            if (r16) {
-                stbi_us* decoded = stbi_load_16_from_memory(png.data(), int(png.size()), &width, &height, &channels, 1);
-                ASSERT_NE(decoded, nullptr) << stbi_failure_reason();
-                const auto* bytes = reinterpret_cast<const uint8_t*>(decoded);
-                texels.assign(bytes, bytes + size_t(width) * height * 2);
-                stbi_image_free(decoded);
-            } else {
-                stbi_uc* decoded = stbi_load_from_memory(png.data(), int(png.size()), &width, &height, &channels, 4);
-                ASSERT_NE(decoded, nullptr) << stbi_failure_reason();
-                texels.assign(decoded, decoded + size_t(width) * height * 4);
-                stbi_image_free(decoded);
-            }
-            EXPECT_EQ(uint32_t(width), maps[m]->width);
-            EXPECT_EQ(texels, maps[m]->bytes) << "map " << m;  // 16-bit samples come back host (little) endian
+            auto decoded = tessera::decodeImage(png, r16 ? tessera::PngLayout::Gray16 : tessera::PngLayout::Rgba8);
+            ASSERT_TRUE(decoded) << decoded.error().message;
+            EXPECT_EQ(decoded->width, maps[m]->width);
+            EXPECT_EQ(decoded->bytes, maps[m]->bytes) << "map " << m;  // 16-bit samples come back host (little) endian
         }
     }
 }

@@ -3,7 +3,7 @@
 #include "GltfError.h"
 #include "GltfFormats.h"
 
-#include <stb_image.h>
+#include "tessera/core/ImageFile.h"
 
 #include <cmath>
 #include <cstring>
@@ -201,9 +201,8 @@ void GltfDataValidator::checkImages() const {
         if (!declared.empty() && declared != found)
             raise(ptr, "image data is " + found + " but the declared type is " + declared);
         if (found == "image/webp") continue;
-        int w = 0, h = 0, c = 0;
-        if (b.size() > static_cast<size_t>(INT32_MAX) || !stbi_info_from_memory(b.data(), static_cast<int>(b.size()), &w, &h, &c))
-            raise(ptr, std::string("invalid image data (") + stbi_failure_reason() + ")");
+        if (auto header = readImageHeader(b); !header)
+            raise(ptr, "invalid image data (" + header.error().message + ")");
     }
 }
 

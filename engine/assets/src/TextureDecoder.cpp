@@ -2,10 +2,9 @@
 
 #include "GltfError.h"
 
-#include <stb_image.h>
+#include "tessera/core/ImageFile.h"
 
-#include <cstring>
-#include <memory>
+#include <cstdint>
 
 namespace tessera::assets {
 
@@ -26,28 +25,22 @@ character::TextureImage decode(const tinygltf::Model& model, int texture, bool s
     const tinygltf::Image& image = textureImage(model, texture, ptr);
     const auto& bytes = image.image;
     if (bytes.size() > static_cast<size_t>(INT32_MAX)) raise(ptr, "image is too large");
-    int w = 0, h = 0, c = 0, size = static_cast<int>(bytes.size());
-    if (!stbi_info_from_memory(bytes.data(), size, &w, &h, &c) || w <= 0 || h <= 0 ||
-        static_cast<uint64_t>(w) * static_cast<uint64_t>(h) > (uint64_t{1} << 28))
+    auto header = readImageHeader(bytes);
+    if (!header || header->width == 0 || header->height == 0 ||
+        uint64_t{header->width} * uint64_t{header->height} > (uint64_t{1} << 28))
         raise(ptr, "cannot decode image '" + image.uri.substr(0, 64) + "'");
+    if (sixteenBit && !header->sixteenBit) raise(ptr, "displacement map must be a 16-bit PNG");
+    // A displacement map's samples stay 16-bit (R16, the host's little-endian
+    // order); colour and normal maps are RGBA8.
+    auto pixels = decodeImage(bytes, sixteenBit ? PngLayout::Gray16 : PngLayout::Rgba8);
+    if (!pixels)
+        raise(ptr, std::string(sixteenBit ? "cannot decode displacement image: " : "cannot decode image: ") +
+                       pixels.error().message);
     character::TextureImage out;
-    out.width = static_cast<uint32_t>(w);
-    out.height = static_cast<uint32_t>(h);
-    if (sixteenBit) {
-        if (!stbi_is_16_bit_from_memory(bytes.data(), size)) raise(ptr, "displacement map must be a 16-bit PNG");
-        std::unique_ptr<stbi_us, void (*)(void*)> pixels(stbi_load_16_from_memory(bytes.data(), size, &w, &h, &c, 1),
-                                                         stbi_image_free);
-        if (!pixels) raise(ptr, std::string("cannot decode displacement image: ") + stbi_failure_reason());
-        out.format = character::TextureFormat::R16;
-        out.bytes.resize(static_cast<size_t>(w) * static_cast<size_t>(h) * 2);
-        std::memcpy(out.bytes.data(), pixels.get(), out.bytes.size());  // little-endian host
-    } else {
-        std::unique_ptr<stbi_uc, void (*)(void*)> pixels(stbi_load_from_memory(bytes.data(), size, &w, &h, &c, 4),
-                                                         stbi_image_free);
-        if (!pixels) raise(ptr, std::string("cannot decode image: ") + stbi_failure_reason());
-        out.format = character::TextureFormat::Rgba8;
-        out.bytes.assign(pixels.get(), pixels.get() + static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
-    }
+    out.width = pixels->width;
+    out.height = pixels->height;
+    out.format = sixteenBit ? character::TextureFormat::R16 : character::TextureFormat::Rgba8;
+    out.bytes = std::move(pixels->bytes);
     return out;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// TextureDecoder: the images a character's material uses, decoded with stb:
+// TextureDecoder: the images a character's material uses, decoded by the
+// core's one decoder (tessera/core/ImageFile.h, decodeImage):
 // base colour and normal map to Rgba8, the displacement map (a 16-bit
 // grayscale PNG named by extras.tessera_displacement) to R16.
 

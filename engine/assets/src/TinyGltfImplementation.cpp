@@ -1,7 +1,7 @@
 // The one translation unit that compiles tinygltf (not linked from Debian's
 // libtinygltf). Draco is decoded by DracoDecoder, not by tinygltf's
 // TINYGLTF_ENABLE_DRACO path (see DracoDecoder.h for why). Images are not
-// decoded by tinygltf (TextureDecoder does it with stb); its
+// decoded by tinygltf (TextureDecoder does it with the core's decoder); its
 // stb_image/stb_image_write paths are compiled out.
 #define TINYGLTF_IMPLEMENTATION
 #define TINYGLTF_NO_STB_IMAGE

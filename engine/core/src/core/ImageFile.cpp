@@ -1,10 +1,10 @@
 #include "tessera/core/ImageFile.h"
 
-#include <stb_image.h>
-
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 
 namespace tessera {
 
@@ -38,15 +38,13 @@ Status writePng(const std::filesystem::path& path, const Rgba8Image& image) {
 Result<Rgba8Image> readPng(const std::filesystem::path& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) return fail(path.string(), ": no such file");
-    int w = 0, h = 0, channels = 0;
-    stbi_uc* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
-    if (!data) return fail(path.string(), ": not a readable image (", stbi_failure_reason(), ")");
-    Rgba8Image image;
-    image.width = uint32_t(w);
-    image.height = uint32_t(h);
-    image.pixels.assign(data, data + size_t(w) * h * 4);
-    stbi_image_free(data);
-    return image;
+    std::ifstream in(path, std::ios::binary);
+    const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // stb's own words for a file it cannot open, as when it opened files itself.
+    if (!in.is_open() || in.bad()) return fail(path.string(), ": not a readable image (can't fopen)");
+    auto decoded = decodeImage(bytes, PngLayout::Rgba8);
+    if (!decoded) return fail(path.string(), ": not a readable image (", decoded.error().message, ")");
+    return Rgba8Image{decoded->width, decoded->height, std::move(decoded->bytes)};
 }
 
 } // namespace tessera

@@ -4,19 +4,12 @@
 
 #include <cstring>
 #include <fstream>
-#include <memory>
 #include <string>
-
-#include <stb_image.h>
 
 namespace tessera::terrain {
 namespace {
 
 constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-
-struct StbFree {
-    void operator()(void* pixels) const { stbi_image_free(pixels); }
-};
 
 Result<std::vector<unsigned char>> readFile(const std::filesystem::path& path) {
     const std::string name = path.string();
@@ -48,37 +41,27 @@ Result<HeightField> loadHeightMapPng(const std::filesystem::path& path, TerrainS
         return fail(name, ": not a PNG file");
     if (data.size() > size_t(INT32_MAX)) return fail(name, ": file too large");
 
-    const int length = int(data.size());
-    int w = 0, h = 0, channels = 0;
     // Validate the header before decoding so a colour or oversized image is
     // rejected without allocating its pixels.
-    if (!stbi_info_from_memory(data.data(), length, &w, &h, &channels))
-        return fail(name, ": corrupt PNG (", stbi_failure_reason(), ")");
-    if (channels != 1 && channels != 2)
-        return fail(name, ": expected a grayscale PNG, got ", std::to_string(channels), " channels");
+    auto header = readImageHeader(data);
+    if (!header) return fail(name, ": corrupt PNG (", header.error().message, ")");
+    const uint32_t w = header->width, h = header->height;
+    if (header->channels != 1 && header->channels != 2)
+        return fail(name, ": expected a grayscale PNG, got ", std::to_string(header->channels), " channels");
     const std::string dims = std::to_string(w) + "x" + std::to_string(h);
-    if (w < int(kMinHeightMapSide) || h < int(kMinHeightMapSide))
+    if (w < kMinHeightMapSide || h < kMinHeightMapSide)
         return fail(name, ": height map is ", dims, ", smaller than the minimum 2x2");
-    if (w > int(kMaxHeightMapSide) || h > int(kMaxHeightMapSide))
+    if (w > kMaxHeightMapSide || h > kMaxHeightMapSide)
         return fail(name, ": height map is ", dims, ", larger than the maximum 16384 per side");
 
-    const size_t count = size_t(w) * size_t(h);
-    std::vector<uint16_t> samples(count);
-    int dw = 0, dh = 0, fileChannels = 0;
-    // desired_channels = 1 makes stb drop the alpha of gray+alpha images.
-    if (stbi_is_16_bit_from_memory(data.data(), length)) {
-        std::unique_ptr<stbi_us, StbFree> pixels(
-            stbi_load_16_from_memory(data.data(), length, &dw, &dh, &fileChannels, 1));
-        if (!pixels) return fail(name, ": corrupt PNG (", stbi_failure_reason(), ")");
-        std::memcpy(samples.data(), pixels.get(), count * sizeof(uint16_t));
-    } else {
-        std::unique_ptr<stbi_uc, StbFree> pixels(
-            stbi_load_from_memory(data.data(), length, &dw, &dh, &fileChannels, 1));
-        if (!pixels) return fail(name, ": corrupt PNG (", stbi_failure_reason(), ")");
-        // v * 257 maps 0..255 onto 0..65535 exactly (0xAB -> 0xABAB).
-        for (size_t k = 0; k < count; ++k) samples[k] = uint16_t(pixels.get()[k] * 257u);
-    }
-    return HeightField(uint32_t(w), uint32_t(h), std::move(samples), scale);
+    // Gray16 drops the alpha of gray+alpha images and widens 8-bit samples
+    // by 257, mapping 0..255 onto 0..65535 exactly (0xAB -> 0xABAB).
+    auto pixels = decodeImage(data, PngLayout::Gray16);
+    if (!pixels) return fail(name, ": corrupt PNG (", pixels.error().message, ")");
+    if (pixels->width != w || pixels->height != h) return fail(name, ": corrupt PNG (its header and pixels disagree)");
+    std::vector<uint16_t> samples(size_t(w) * size_t(h));
+    std::memcpy(samples.data(), pixels->bytes.data(), samples.size() * sizeof(uint16_t));
+    return HeightField(w, h, std::move(samples), scale);
 }
 
 Status saveHeightMapPng16(const std::filesystem::path& path, uint32_t width, uint32_t height,
