@@ -4,7 +4,7 @@
 #include "ReportFixture.h"
 
 #include "report/BenchInput.h"
-#include "report/ImageDiff.h"
+#include "report/DataUri.h"
 #include "report/ReportHtml.h"
 #include "report/ReportWriter.h"
 

@@ -1,6 +1,7 @@
 #include "ImageCompare.h"
 
-#include <cstdlib>
+#include "tessera/core/ImageDiff.h"
+
 #include <sstream>
 
 namespace tessera::test {
@@ -15,25 +16,13 @@ ImageComparison compareImages(const Rgba8Image& actual, const Rgba8Image& expect
         result.message = out.str();
         return result;
     }
-    const size_t pixels = size_t(actual.width) * actual.height;
-    Rgba8Image diff{actual.width, actual.height, std::vector<uint8_t>(pixels * 4)};
-    size_t differing = 0;
-    double total = 0.0;
-    for (size_t p = 0; p < pixels; ++p) {
-        int worst = 0;
-        for (int c = 0; c < 3; ++c) {
-            const int d = std::abs(int(actual.pixels[p * 4 + c]) - int(expected.pixels[p * 4 + c]));
-            worst = std::max(worst, d);
-            total += d;
-        }
-        const bool differs = worst > tolerance.channelThreshold;
-        differing += differs;
-        for (int c = 0; c < 3; ++c) diff.pixels[p * 4 + c] = uint8_t(expected.pixels[p * 4 + c] / 4);
-        if (differs) diff.pixels[p * 4 + 0] = 255;
-        diff.pixels[p * 4 + 3] = 255;
+    auto diff = diffImages(actual, expected, tolerance.channelThreshold);
+    if (!diff) {
+        result.message = diff.error().message;
+        return result;
     }
-    result.differingFraction = double(differing) / double(pixels);
-    result.meanDifference = total / double(pixels * 3);
+    result.differingFraction = diff->differingFraction;
+    result.meanDifference = diff->meanDifference;
     result.match = result.differingFraction <= tolerance.maxDifferingFraction &&
                    result.meanDifference <= tolerance.maxMeanDifference;
     if (!result.match) {
@@ -42,7 +31,7 @@ ImageComparison compareImages(const Rgba8Image& actual, const Rgba8Image& expect
             << " (allowed " << tolerance.maxDifferingFraction * 100.0 << "%), mean difference " << result.meanDifference
             << " (allowed " << tolerance.maxMeanDifference << "); diff image: " << diffPath;
         result.message = out.str();
-        (void)writePng(diffPath, diff);
+        (void)writePng(diffPath, diff->image);
     }
     return result;
 }

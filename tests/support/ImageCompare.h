@@ -1,7 +1,9 @@
 #pragma once
 /// @file ImageCompare.h
-/// Golden-image comparison with a stated tolerance and a diff image.
+/// Golden-image comparison with a stated tolerance and a diff image, over
+/// the core's one image diff (tessera/core/ImageDiff.h).
 
+#include "tessera/core/ImageDiff.h"
 #include "tessera/core/ImageFile.h"
 
 #include <string>
@@ -10,7 +12,7 @@ namespace tessera::test {
 
 struct ImageTolerance {
     /// A pixel differs when any channel differs by more than this (0..255).
-    int channelThreshold = 24;
+    int channelThreshold = kDiffChannelThreshold;
     /// At most this fraction of pixels may differ.
     double maxDifferingFraction = 0.005;
     /// The mean absolute channel difference over the image may not exceed this.

@@ -1,7 +1,9 @@
 #include "report/ReportHtml.h"
 
 #include "SvgChart.h"
-#include "report/ImageDiff.h"
+#include "report/DataUri.h"
+
+#include "tessera/core/ImageDiff.h"
 
 #include <algorithm>
 #include <cstdio>
