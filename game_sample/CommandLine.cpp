@@ -3,9 +3,10 @@
 #include "DemoFlags.h"
 #include "FlagValues.h"
 
+#include "tessera/cli/CameraPoseText.h"
+#include "tessera/cli/FeatureMaskText.h"
 #include "tessera/cli/Validators.h"
 #include "tessera/lod/LodPolicy.h"
-#include "tessera/scene/CameraPose.h"
 
 namespace tessera::demo {
 
@@ -17,9 +18,9 @@ constexpr const char* kDescription =
     "Renders the crowd on tessellated terrain (or the flythrough, the characters, the subdivision surfaces, a "
     "benchmark). Headless (offscreen) by default, on the best Vulkan device (a GPU, else lavapipe).";
 
-/// Turns the flags read as text into Options, each with its own message.
-Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o) {
-    const CLI::App& app = line.app();
+/// The flags whose values are lists (tessera/cli/NumberList.h's rules), or
+/// files, into Options.
+Status interpretLists(const CLI::App& app, const DemoFlagText& t, Options& o) {
     auto given = [&](const char* flag) { return app.count(flag) > 0; };
     for (const auto& model : t.models) (isObjFile(model) ? o.surfaces : o.models).push_back(model);
     for (const auto& text : t.splats) {
@@ -43,7 +44,7 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
         o.sunDirection = sun.value();
     }
     if (given("--camera")) {
-        auto pose = scene::parseCameraPose(t.camera);
+        auto pose = cli::parseCameraPose(t.camera);
         if (!pose) return pose.error();
         o.camera = pose.value();
     }
@@ -59,6 +60,14 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
         o.orbitDistance = sweep.value().first;
         o.orbitDistanceEnd = sweep.value().second;
     }
+    return {};
+}
+
+/// Turns the flags read as text into Options, each with its own message.
+Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o) {
+    const CLI::App& app = line.app();
+    auto given = [&](const char* flag) { return app.count(flag) > 0; };
+    if (Status lists = interpretLists(app, t, o); !lists) return lists;
     if (given("--character-path"))
         o.characterPath = t.characterPath == "single-pass" ? backend::CharacterPath::SinglePass
                                                            : backend::CharacterPath::TwoPass;
@@ -98,7 +107,7 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
     if (given("--renderdoc")) o.renderdocFrame = t.renderdocFrame;
     if (given("--device-memory-cap")) o.deviceMemoryCap = t.deviceMemoryCap << 20;
     if (given("--hide-features")) {
-        auto mask = device::parseFeatureMask(t.hideFeatures);
+        auto mask = cli::parseFeatureMask(t.hideFeatures);
         if (!mask) return fail("--hide-features: ", mask.error().message);
         o.hiddenFeatures = mask.value();
     }

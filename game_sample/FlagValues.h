@@ -1,8 +1,9 @@
 #pragma once
 /// @file FlagValues.h
 /// tessera-demo's flag values that are more than one number or word (lists,
-/// colours, craters, ranges), each parsed with an error that names the flag
-/// and shows what was given.
+/// colours, craters, ranges), each read by the command line's one list
+/// reader (tessera/cli/NumberList.h) with an error that names the flag and
+/// shows what was given.
 
 #include "tessera/core/Result.h"
 #include "tessera/terrain/CraterSplat.h"

@@ -1,10 +1,12 @@
-// --hide-features' parser and mask (device::FeatureMask): names in, flags
-// cleared, an unknown name refused with the known ones listed.
+// --hide-features' parser (cli::parseFeatureMask) and mask (device::FeatureMask):
+// names in, flags cleared, an unknown name refused with the known ones listed.
+#include "tessera/cli/FeatureMaskText.h"
 #include "tessera/device/FeatureMask.h"
 
 #include <gtest/gtest.h>
 
 using namespace tessera::device;
+using tessera::cli::parseFeatureMask;
 
 namespace {
 

@@ -1,10 +1,13 @@
+// A camera pose's text form: the engine writes it (scene::formatCameraPose),
+// the command line reads it (cli::parseCameraPose, by the one list reader).
+#include "tessera/cli/CameraPoseText.h"
 #include "tessera/scene/CameraPose.h"
 
 #include <gtest/gtest.h>
 
+using tessera::cli::parseCameraPose;
 using tessera::scene::CameraPose;
 using tessera::scene::formatCameraPose;
-using tessera::scene::parseCameraPose;
 
 namespace {
 

@@ -1,9 +1,8 @@
 #include "tessera/cli/Validators.h"
 
-#include <charconv>
-#include <cmath>
+#include "tessera/cli/NumberList.h"
+
 #include <cstdio>
-#include <cstdlib>
 
 namespace tessera::cli {
 
@@ -21,29 +20,28 @@ std::string listChoices(const std::vector<std::string>& choices) {
 }
 
 CLI::Validator count(uint64_t lo, uint64_t hi) {
-    const std::string expects =
-        "expects a whole number from " + std::to_string(lo) + " to " + std::to_string(hi);
+    const ListForm form{"", "a whole number from " + std::to_string(lo) + " to " + std::to_string(hi), {}, 1, 1, ',',
+                        double(lo), double(hi)};
     return CLI::Validator(
-        [lo, hi, expects](std::string& text) -> std::string {
-            uint64_t value = 0;
-            auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-            if (text.empty() || ec != std::errc() || end != text.data() + text.size() || value < lo || value > hi)
-                return expects + ", got \"" + text + "\"";
+        [form](std::string& text) -> std::string {
+            auto value = parseNumber<uint64_t>(text, form);
+            if (!value) return value.error().message;
+            // CLI11 reads integers with strtoull's base 0 ("010" is eight):
+            // it gets the value read here, in plain decimal.
+            text = std::to_string(value.value());
             return {};
         },
         "", "count");
 }
 
 CLI::Validator number(double lo, double hi) {
-    const std::string expects = "expects a number from " + formatNumber(lo) + " to " + formatNumber(hi);
+    const ListForm form{"", "a number from " + formatNumber(lo) + " to " + formatNumber(hi), {}, 1, 1, ',', lo, hi};
     return CLI::Validator(
-        [lo, hi, expects](std::string& text) -> std::string {
-            // strtod, not from_chars: GCC 12's from_chars for double is fine,
-            // but strtod is what the old parser accepted ("1e3", "0x10").
-            char* end = nullptr;
-            const double v = std::strtod(text.c_str(), &end);
-            if (text.empty() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi)
-                return expects + ", got \"" + text + "\"";
+        [form](std::string& text) -> std::string {
+            if (auto value = parseNumber<double>(text, form); !value) return value.error().message;
+            // CLI11 converts the text itself (strtold, into the option's
+            // type); it gets the number without what the rules let around it.
+            text = std::string(withoutPlus(splitList(text).front()));
             return {};
         },
         "", "number");

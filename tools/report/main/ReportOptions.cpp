@@ -1,5 +1,6 @@
 #include "ReportOptions.h"
 
+#include "tessera/cli/CameraPoseText.h"
 #include "tessera/cli/CommandLine.h"
 #include "tessera/cli/Validators.h"
 
@@ -40,8 +41,7 @@ void declare(cli::CommandLine& line, ReportOptions& o, Text& t) {
         ->type_name("N")
         ->check(cli::count(0, 100000));
     app.add_option("--camera", o.camera, "--run's screenshot view, x,y,z,yaw,pitch (default 1800,900,6800,-30,-16)")
-        ->type_name("x,y,z,yaw,pitch")
-        ->check(cli::nonEmpty());
+        ->type_name("x,y,z,yaw,pitch");
     app.add_option("--device", o.device, "--run's Vulkan device (index or name substring)")->type_name("NAME|INDEX");
     app.add_option("--demo", t.demo, "the tessera-demo to run (default: the one next to tessera-report)")
         ->type_name("FILE")
@@ -80,6 +80,9 @@ Result<ReportOptions> parseReportOptions(int argc, const char* const* argv) {
         return o;
     }
     if (t.dir.empty()) return fail("--dir DIR is required");
+    // The view goes to tessera-demo; read it as the demo does, so a typo
+    // stops here rather than after the benchmark's run.
+    if (auto pose = cli::parseCameraPose(o.camera); !pose) return pose.error();
     o.dir = t.dir;
     o.out = t.out.empty() ? o.dir / "report.html" : std::filesystem::path(t.out);
     o.demo = t.demo;

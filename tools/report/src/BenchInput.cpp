@@ -1,5 +1,7 @@
 #include "report/BenchInput.h"
 
+#include "tessera/cli/NumberList.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -63,15 +65,6 @@ private:
     std::string mError;
 };
 
-std::vector<std::string> splitComma(const std::string& text) {
-    std::vector<std::string> parts;
-    std::string part;
-    std::istringstream in(text);
-    while (std::getline(in, part, ','))
-        if (!part.empty()) parts.push_back(part);
-    return parts;
-}
-
 } // namespace
 
 std::string BenchRecord::rowLabel() const {
@@ -123,7 +116,11 @@ Result<std::vector<BenchRecord>> parseBenchRecords(const std::string& text, cons
         r.trace = in.text("trace", false);
         const std::string passes = in.text("passes", false);
         if (in.error().empty()) {
-            for (const std::string& pass : splitComma(passes)) {
+            // The record's pass names, by the command line's list rules; an
+            // empty name (a stray comma) names no pass.
+            for (std::string_view word : cli::splitList(passes)) {
+                if (word.empty()) continue;
+                const std::string pass(word);
                 const std::string key = "pass:" + pass + ":gpu_ms_median";
                 PassTime p{pass, in.number(key.c_str())};
                 r.passes.push_back(std::move(p));

@@ -31,26 +31,10 @@ std::string featureMaskNames() {
     return out;
 }
 
-Result<FeatureMask> parseFeatureMask(std::string_view list) {
-    FeatureMask mask;
-    if (list.empty()) return mask;
-    for (bool more = true; more;) {
-        // Every element between commas must be a name: "a,,b" and "a," are typos.
-        const size_t comma = list.find(',');
-        const std::string_view word = list.substr(0, comma);
-        more = comma != std::string_view::npos;
-        if (more) list.remove_prefix(comma + 1);
-        bool known = false;
-        for (size_t i = 0; i < kFeatures.size(); ++i) {
-            if (word == kFeatures[i].name) {
-                mask.bits |= 1u << i;
-                known = true;
-            }
-        }
-        if (!known)
-            return fail("unknown feature \"", std::string(word), "\" (known: ", featureMaskNames(), ")");
-    }
-    return mask;
+std::optional<FeatureMask> featureNamed(std::string_view name) {
+    for (size_t i = 0; i < kFeatures.size(); ++i)
+        if (name == kFeatures[i].name) return FeatureMask{1u << i};
+    return std::nullopt;
 }
 
 void applyFeatureMask(const FeatureMask& mask, DeviceFeatures& features) {

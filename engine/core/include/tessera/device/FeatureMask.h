@@ -7,9 +7,9 @@
 /// the validation layer catches a backend that uses it anyway.
 
 #include "tessera/device/DeviceFeatures.h"
-#include "tessera/core/Result.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -21,11 +21,13 @@ struct FeatureMask {
     bool empty() const { return bits == 0; }
 };
 
-/// Parses a comma list of feature names ("tessellation,geometry"); an error
-/// naming the unknown one and the known names otherwise.
-Result<FeatureMask> parseFeatureMask(std::string_view list);
+/// The feature called `name` ("tessellation", "multi-draw-indirect": the
+/// words of featureMaskNames()) as a mask of one bit; nullopt for any other
+/// word. Hosts read their lists of names themselves (the command line's
+/// reader is tessera/cli/FeatureMaskText.h).
+std::optional<FeatureMask> featureNamed(std::string_view name);
 
-/// The names parseFeatureMask accepts, comma separated.
+/// The names featureNamed knows, comma separated.
 std::string featureMaskNames();
 
 /// Clears the features of `mask` in `features` (and the tessellation level

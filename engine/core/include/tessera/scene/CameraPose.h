@@ -1,12 +1,9 @@
 #pragma once
 /// @file CameraPose.h
-/// A camera position and heading, and its command-line form.
-
-#include "tessera/core/Result.h"
+/// A camera position and heading, and its text form.
 
 #include <glm/glm.hpp>
 #include <string>
-#include <string_view>
 
 namespace tessera::scene {
 
@@ -19,16 +16,12 @@ struct CameraPose {
     float pitch = 0.0f;
 };
 
-/// Parses the command-line form "x,y,z,yaw,pitch": position in metres, yaw and
-/// pitch in DEGREES (returned in radians). Exactly five finite decimal numbers
-/// separated by commas; spaces and tabs around each number are allowed.
-/// Locale-independent (std::from_chars). On bad input the Error message says
-/// what is wrong, e.g. `--camera expects x,y,z,yaw,pitch (5 numbers), got "1,2"`.
-Result<CameraPose> parseCameraPose(std::string_view text);
-
-/// Formats `pose` in the form parseCameraPose() reads (degrees), so a pose can
-/// be logged and replayed with --camera. Round-trips to within float rounding
-/// of the degree/radian conversion.
+/// Formats `pose` as "x,y,z,yaw,pitch": the position in metres, yaw and pitch
+/// in degrees, each the shortest text that reads back to the same float,
+/// independent of the locale. A host logs a pose in this form and reads it
+/// back from its own settings (the command line's reader is
+/// tessera/cli/CameraPoseText.h); it round-trips to within float rounding of
+/// the degree/radian conversion.
 std::string formatCameraPose(const CameraPose& pose);
 
 } // namespace tessera::scene

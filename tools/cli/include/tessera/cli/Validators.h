@@ -2,7 +2,8 @@
 /// @file Validators.h
 /// CLI11 validators with Tessera's messages, shared by every program so a
 /// range or a choice is checked and worded the same way everywhere. A failed
-/// check reads `--flag <message>` (CommandLine::parse).
+/// check reads `--flag <message>` (CommandLine::parse). Numbers are read by
+/// the rules of NumberList.h, as every list is.
 
 #include <CLI/CLI.hpp>
 
