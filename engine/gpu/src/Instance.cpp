@@ -86,14 +86,14 @@ Result<std::unique_ptr<Instance>> Instance::create(const InstanceOptions& option
     if (options.windowing) {
         uint32_t count = 0;
         const char** glfwExts = glfwGetRequiredInstanceExtensions(&count);
-        if (!glfwExts) return fail("windowed mode: GLFW found no Vulkan surface support on this display");
+        if (!glfwExts) return failSetting("window", ": GLFW found no Vulkan surface support on this display");
         extensions.insert(extensions.end(), glfwExts, glfwExts + count);
     }
     std::vector<const char*> layers;
     if (options.validation) {
         if (!hasLayer(kValidationLayer))
-            return fail("--validation: the Khronos validation layer (", kValidationLayer,
-                        ") is not installed; install the Debian package vulkan-validationlayers");
+            return failSetting("validation", ": the Khronos validation layer (", kValidationLayer,
+                               ") is not installed; install the Debian package vulkan-validationlayers");
         layers.push_back(kValidationLayer);
     }
 
@@ -126,7 +126,7 @@ Result<std::unique_ptr<Instance>> Instance::create(const InstanceOptions& option
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance->mInstance, "vkCreateDebugUtilsMessengerEXT"));
         if (!create || create(instance->mInstance, &messenger, nullptr, &instance->mMessenger) != VK_SUCCESS)
-            return fail("--validation: could not install the debug messenger");
+            return failSetting("validation", ": could not install the debug messenger");
     }
     instance->mWindowing = options.windowing;
     instance->enumerate();
@@ -205,11 +205,11 @@ Result<PhysicalDeviceInfo> Instance::selectDevice(const std::string& selector) c
     auto [end, ec] = std::from_chars(selector.data(), selector.data() + selector.size(), index);
     if (ec == std::errc() && end == selector.data() + selector.size()) {
         if (index < mDevices.size()) return mDevices[index];
-        return fail("--device ", selector, ": there is no device with that index; devices:", listing());
+        return failSetting("device", " ", selector, ": there is no device with that index; devices:", listing());
     }
     for (const auto& d : mDevices)
         if (lower(d.features.deviceName).find(lower(selector)) != std::string::npos) return d;
-    return fail("--device ", selector, ": no device name contains that text; devices:", listing());
+    return failSetting("device", " ", selector, ": no device name contains that text; devices:", listing());
 }
 
 } // namespace tessera::gpu

@@ -21,17 +21,17 @@ bool Swapchain::initWindowSystem() {
 Result<std::unique_ptr<Swapchain>> Swapchain::create(Instance& instance, Device& device, uint32_t width, uint32_t height,
                                                      const std::string& title) {
     if (!initWindowSystem())
-        return fail("--window: no display is available (GLFW could not initialise or has no Vulkan support); "
-                    "run without --window for headless rendering");
+        return failSetting("window", ": no display is available (GLFW could not initialise or has no Vulkan "
+                                     "support); render headless (offscreen) instead");
     std::unique_ptr<Swapchain> swapchain(new Swapchain(instance, device));
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     swapchain->mWindow = glfwCreateWindow(static_cast<int>(width), static_cast<int>(height), title.c_str(), nullptr, nullptr);
-    if (!swapchain->mWindow) return fail("--window: could not open a window");
+    if (!swapchain->mWindow) return failSetting("window", ": could not open a window");
     if (glfwCreateWindowSurface(instance.handle(), swapchain->mWindow, nullptr, &swapchain->mSurface) != VK_SUCCESS)
-        return fail("--window: could not create a Vulkan surface for the window");
+        return failSetting("window", ": could not create a Vulkan surface for the window");
     VkBool32 presentable = VK_FALSE;
     vkGetPhysicalDeviceSurfaceSupportKHR(device.physical(), device.queueFamily(), swapchain->mSurface, &presentable);
-    if (!presentable) return fail("--window: ", device.features().deviceName, " cannot present to this window");
+    if (!presentable) return failSetting("window", ": ", device.features().deviceName, " cannot present to this window");
     if (auto built = swapchain->build(); !built) return built.error();
     return swapchain;
 }
@@ -50,7 +50,7 @@ Status Swapchain::build() {
     vkGetPhysicalDeviceSurfaceFormatsKHR(mDevice.physical(), mSurface, &formatCount, nullptr);
     std::vector<VkSurfaceFormatKHR> formats(formatCount);
     vkGetPhysicalDeviceSurfaceFormatsKHR(mDevice.physical(), mSurface, &formatCount, formats.data());
-    if (formats.empty()) return fail("--window: the surface offers no formats");
+    if (formats.empty()) return failSetting("window", ": the surface offers no formats");
     // The offscreen target is UNORM; pick a UNORM swapchain so the blit copies
     // values unchanged and windowed pixels equal headless screenshots.
     VkSurfaceFormatKHR chosen = formats[0];
@@ -80,7 +80,7 @@ Status Swapchain::build() {
     info.presentMode = VK_PRESENT_MODE_FIFO_KHR;
     info.clipped = VK_TRUE;
     if (vkCreateSwapchainKHR(mDevice.handle(), &info, nullptr, &mSwapchain) != VK_SUCCESS)
-        return fail("--window: could not create the swapchain");
+        return failSetting("window", ": could not create the swapchain");
     mDevice.setName(VK_OBJECT_TYPE_SWAPCHAIN_KHR, mSwapchain, "window.swapchain");
     uint32_t count = 0;
     vkGetSwapchainImagesKHR(mDevice.handle(), mSwapchain, &count, nullptr);
