@@ -3,8 +3,9 @@
 /// The crowd's level-of-detail manager: per frame, the parameters every
 /// backend's GPU culling and binning read (thresholds, and the cuts and
 /// level cap that keep the frame within its budget), and the CPU reference
-/// of the selection, which the null backend draws from and the tests
-/// compare the GPU with. See docs/CROWD.md, "Rendering".
+/// of the selection, which the tests compare every backend's lists with
+/// (the null backend, like a GPU one, runs the per-instance rule on these
+/// parameters). See docs/CROWD.md, "Rendering".
 ///
 /// The per-instance rule is shader::tsLodUpdate (CrowdLod.h), shared with
 /// the GPU passes; this class adds what needs the whole frame: the budget.

@@ -4,8 +4,10 @@
 // (shaders) alike, so std140/std430 structures are written once and cannot
 // drift (OpenSubdiv's patchBasisTypes.h, Falcor's HostDeviceShared.slangh).
 // Rules for layouts written with it:
-//   - use only vec4, uvec4, ivec4 and mat4 members (16-byte aligned in every
-//     std140/std430 rule and in C++ with glm), packing scalars into vec4s;
+//   - use vec4, uvec4, ivec4 and mat4 members (16-byte aligned in every
+//     std140/std430 rule and in C++ with glm), packing scalars into vec4s,
+//     or make the whole struct four 4-byte scalars (uint, float: 16 bytes
+//     with no padding in either rule, as CrowdListEntry);
 //   - follow each struct with TS_CHECK_SIZE(Struct, bytes) (no semicolon: GLSL
 //     rejects a stray one), which C++ checks.
 // Functions written with TS_INLINE are compiled by both too (crater profile,
