@@ -1,5 +1,7 @@
 #include "tessera/runtime/BackendSelection.h"
 
+#include "tessera/runtime/Reporter.h"
+#include "tessera/runtime/Settings.h"
 #include "tessera/core/Log.h"
 #include "tessera/gpu/Swapchain.h"
 
@@ -31,6 +33,7 @@ std::string joinMissing(const backend::BackendCapabilities& caps) {
 } // namespace
 
 Result<std::unique_ptr<SelectedBackend>> selectBackend(const Options& options) {
+    const Reporter& reporter = reporterFor(options);
     auto selected = std::make_unique<SelectedBackend>();
     auto loader = makeLoader(options);
 
@@ -71,19 +74,22 @@ Result<std::unique_ptr<SelectedBackend>> selectBackend(const Options& options) {
         }
         if (caps.requiresGpu) caps = candidate->capabilities(&selected->device->features());
         if (!caps.supported()) {
-            const std::string why = "backend " + name + " cannot run on " + selected->device->features().deviceName +
-                                    ": it needs " + joinMissing(caps);
-            if (!options.backend.empty()) return fail(why, "; run --list-backends to see which backends this device runs");
-            log::info(why + "; trying the next backend");
+            const std::string why =
+                " " + name + " cannot run on " + selected->device->features().deviceName + ": it needs " + joinMissing(caps);
+            if (!options.backend.empty())
+                return failSetting(setting::kBackend, why, "; ", reporter.name(setting::kListBackends),
+                                   " to see which backends this device runs");
+            log::info(setting::kBackend + why + "; trying the next backend");
             continue;
         }
         if (!caps.requiresGpu && options.deviceMemoryCap)
-            log::warning("--device-memory-cap: backend " + name + " allocates no device memory; the cap does nothing");
+            reporter.warning(failSetting(setting::kDeviceMemoryCap, ": backend ", name,
+                                         " allocates no device memory; the cap does nothing"));
         selected->backend = std::move(candidate);
         selected->capabilities = caps;
         return selected;
     }
-    return fail("no backend can run on this device; run --list-backends for details");
+    return fail("no backend can run on this device; ", reporter.name(setting::kListBackends), " for details");
 }
 
 Result<backend::BackendPtr> createBackendOnDevice(SelectedBackend& selected, const Options& options,
@@ -102,7 +108,7 @@ Result<backend::BackendPtr> createBackendOnDevice(SelectedBackend& selected, con
                     "start with a GPU backend to switch between them");
     if (!caps.requiresGpu && features)
         return fail("backend ", name, " runs without a device and this session renders on ", features->deviceName,
-                    "; start with --backend ", name, " instead");
+                    "; start with ", reporterFor(options).name(setting::kBackend), " ", name, " instead");
     if (!caps.supported())
         return fail("backend ", name, " cannot run on ", features ? features->deviceName : std::string("this host"),
                     ": it needs ", joinMissing(caps));
@@ -112,7 +118,7 @@ Result<backend::BackendPtr> createBackendOnDevice(SelectedBackend& selected, con
 Status listBackends(const Options& options) {
     auto loader = makeLoader(options);
     backend::BackendRegistry registry;
-    for (const auto& error : loader.loadAll(registry)) log::warning(error.message);
+    for (const auto& error : loader.loadAll(registry)) reporterFor(options).warning(error);
 
     std::optional<device::DeviceFeatures> deviceFeatures;
     if (auto created = makeInstance(options); created) {

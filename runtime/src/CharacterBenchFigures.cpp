@@ -2,42 +2,30 @@
 
 #include "tessera/tessellator/Tessellator.h"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 namespace tessera::runtime {
 namespace {
 
-// The text after `"key":` in a flat JSON object, or null. The generator's
-// report is flat and machine-written, so a key scan is enough here.
-const char* valueOf(const std::string& text, const std::string& key) {
-    const size_t at = text.find("\"" + key + "\"");
-    if (at == std::string::npos) return nullptr;
-    const size_t colon = text.find(':', at);
-    if (colon == std::string::npos) return nullptr;
-    size_t v = colon + 1;
-    while (v < text.size() && (text[v] == ' ' || text[v] == '\n' || text[v] == '\t' || text[v] == '\r')) ++v;
-    return v < text.size() ? text.c_str() + v : nullptr;
-}
-
-std::optional<uint64_t> numberOf(const std::string& text, const std::string& key) {
-    const char* v = valueOf(text, key);
-    if (!v) return std::nullopt;
-    char* end = nullptr;
-    const double n = std::strtod(v, &end);
-    if (end == v || !std::isfinite(n) || n < 0.0) return std::nullopt;
+/// The non-negative number at `key` of `report`, truncated to a whole one;
+/// none when it is missing or not such a number.
+std::optional<uint64_t> countAt(const nlohmann::json& report, const char* key) {
+    const auto it = report.find(key);
+    if (it == report.end() || !it->is_number()) return std::nullopt;
+    if (it->is_number_unsigned()) return it->get<uint64_t>();
+    const double n = it->get<double>();
+    if (!std::isfinite(n) || n < 0.0) return std::nullopt;
     return static_cast<uint64_t>(n);
 }
 
-std::string stringOf(const std::string& text, const std::string& key) {
-    const char* v = valueOf(text, key);
-    if (!v || *v != '"') return {};
-    std::string out;
-    for (++v; *v && *v != '"'; ++v) out += *v == '\\' && v[1] ? *++v : *v;
-    return out;
+/// The text at `key` of `report`; empty when it is missing or not text.
+std::string textAt(const nlohmann::json& report, const char* key) {
+    const auto it = report.find(key);
+    return it != report.end() && it->is_string() ? it->get<std::string>() : std::string();
 }
 
 uint64_t imageBytes(const character::TextureImage& image) {
@@ -73,19 +61,19 @@ std::optional<SculptReport> readSculptReport(const std::filesystem::path& assetF
     path.replace_extension(".json");
     std::ifstream in(path, std::ios::binary);
     if (!in) return std::nullopt;
-    std::stringstream text;
-    text << in.rdbuf();
-    const std::string json = text.str();
-    const auto triangles = numberOf(json, "sculpt_triangles");
-    const auto vertices = numberOf(json, "sculpt_vertices");
-    const auto dense = numberOf(json, "dense_mesh_bytes");
+    // Without exceptions: a report that is not JSON is no report.
+    const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
+    if (!json.is_object()) return std::nullopt;
+    const auto triangles = countAt(json, "sculpt_triangles");
+    const auto vertices = countAt(json, "sculpt_vertices");
+    const auto dense = countAt(json, "dense_mesh_bytes");
     if (!triangles || !vertices || !dense) return std::nullopt;
     SculptReport report;
     report.file = path.filename().string();
     report.sculptTriangles = *triangles;
     report.sculptVertices = *vertices;
     report.denseMeshBytes = *dense;
-    report.denseMeshFormula = stringOf(json, "dense_mesh_formula");
+    report.denseMeshFormula = textAt(json, "dense_mesh_formula");
     return report;
 }
 

@@ -1,25 +1,20 @@
 #include "CharacterBenchmark.h"
 
-#include "tessera/runtime/BackendSelection.h"
+#include "BenchDriver.h"
 #include "BenchSeries.h"
 #include "CharacterBenchFigures.h"
 #include "CharacterBenchReport.h"
-#include "tessera/runtime/World.h"
-#include "LodSettings.h"
-#include "BenchOutputs.h"
-#include "tessera/runtime/RenderSession.h"
+#include "PassTimes.h"
 #include "TerrainBenchReport.h"
+#include "LodSettings.h"
+#include "tessera/runtime/Reporter.h"
+#include "tessera/runtime/Settings.h"
+#include "tessera/runtime/World.h"
 #include "tessera/core/Log.h"
 #include "tessera/profiler/Profiler.h"
-#include "tessera/profiler/TraceWriter.h"
 #include "tessera/tessellator/ContinuousLevel.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <map>
-#include <set>
 
 namespace tessera::runtime {
 namespace {
@@ -34,6 +29,14 @@ constexpr float kSharedMaxLevel = tessellator::ContinuousLevel::kMaxLevel;
 /// --character-level is not given: about 4.8x the shared level's triangles.
 constexpr float kHardwareLevel = 32.0f;
 
+BenchPlan characterPlan() {
+    BenchPlan plan;
+    plan.name = "characters";
+    plan.setting = setting::kCharacterBenchmark;
+    plan.comparison = {kComparisonReference, "r2vb", "streamout"};
+    return plan;
+}
+
 bool isPathPass(const std::string& name, backend::CharacterPath path) {
     if (path == backend::CharacterPath::TwoPass) return name == "character.skin" || name == "character.tessellate";
     return name == "character.singlePass";
@@ -42,167 +45,172 @@ bool isPathPass(const std::string& name, backend::CharacterPath path) {
 /// The row's GPU figures from the profiler's passes of frames [first, end).
 void summarizeRow(const profiler::Profiler& profiler, uint64_t first, uint64_t end, backend::CharacterPath path,
                   CharacterBenchRow& row) {
-    std::map<uint64_t, double> character, frame;
-    std::vector<std::string> order;
-    std::map<std::string, std::vector<double>> perPass;
+    PassTimes times;
     uint64_t statsFrame = 0;
     for (const auto& pass : profiler.gpuPasses()) {
         if (pass.frame < first || pass.frame >= end) continue;
-        const double ms = double(pass.durationNs) / 1e6;
-        frame[pass.frame] += ms;
-        if (isPathPass(pass.name, path)) character[pass.frame] += ms;
-        if (!perPass.count(pass.name)) order.push_back(pass.name);
-        perPass[pass.name].push_back(ms);
+        times.add(pass, isPathPass(pass.name, path), true);
         const bool drawing = pass.name == "character.tessellate" || pass.name == "character.singlePass";
         if (drawing && pass.stats && pass.frame >= statsFrame) {
             statsFrame = pass.frame;
             row.clippingInvocations = pass.stats->clippingInvocations;
         }
     }
-    auto values = [](const std::map<uint64_t, double>& m) {
-        std::vector<double> v;
-        for (const auto& [f, ms] : m) v.push_back(ms);
-        return v;
-    };
-    const BenchSeries c = summarizeSeries(values(character));
+    const BenchSeries c = summarizeSeries(times.selectedTotals());
     row.characterMsMedian = c.median;
     row.characterMsMin = c.min;
     row.characterMsMax = c.max;
-    row.gpuFrameMsMedian = summarizeSeries(values(frame)).median;
-    row.frames = static_cast<uint32_t>(character.size());
-    for (const std::string& name : order) row.passes.emplace_back(name, summarizeSeries(perPass[name]).median);
+    row.gpuFrameMsMedian = summarizeSeries(times.frameTotals()).median;
+    row.frames = times.selectedFrames();
+    row.passes = times.passMedians();
 }
 
-Status writeOutputs(const Options& options, const CharacterBenchSummary& summary) {
-    const std::string json = characterBenchJson(summary);
-    const std::string table = characterBenchTable(summary);
-    return writeBenchOutputs(options, json, table);
+/// What every row of one backend draws with.
+struct RowSetup {
+    scene::Camera camera;
+    terrain::TessellationSettings settings;
+    float top = 0.0f;  ///< the backend's largest character level
+    std::string trace; ///< the backend's trace file, or ""
+};
+
+/// --bench characters on each of its backends: every level the backend
+/// reaches, each drawn two-pass and single-pass.
+class CharacterBench {
+public:
+    CharacterBench(const BenchDriver& driver, terrain::Terrain& ground, CharacterPopulation& crowd)
+        : mDriver(driver), mGround(ground), mCrowd(crowd) {}
+
+    /// The run's settings and levels, with a note when backends that
+    /// tessellate further draw a level the others do not.
+    void describe();
+    /// Every row of backend `name`; an error ends the benchmark.
+    Status runBackend(const std::string& name);
+    /// The figures of every asset, then the outputs.
+    Status finish();
+
+private:
+    /// The row of `path` at `level`: warm-up and measured frames, then their figures.
+    void measureRow(RenderSession& session, const RowSetup& setup, float level, backend::CharacterPath path);
+
+    const BenchDriver& mDriver;
+    terrain::Terrain& mGround;
+    CharacterPopulation& mCrowd;
+    CharacterBenchSummary mSummary;
+    float mRequested = 0.0f, mShared = 0.0f;
+    uint32_t mFrameIndex = 0;
+};
+
+void CharacterBench::describe() {
+    CharacterBenchSummary& s = mSummary;
+    s.width = mDriver.width();
+    s.height = mDriver.height();
+    s.warmupFrames = mDriver.warmup();
+    s.frames = mDriver.frames();
+    s.poseSeconds = kPoseSeconds;
+    s.paperLevel = paperAmplificationLevel(64.0f);
+    s.paperLevelAmplification = double(trianglesPerCageTriangle(float(s.paperLevel)));
+    mRequested = mDriver.options().characterLevel.value_or(kHardwareLevel);
+    mShared = std::min(mRequested, kSharedMaxLevel);
+    s.sharedLevel = mShared;
+    s.tableLevel = mShared;
+    if (mRequested > mShared)
+        s.notes.push_back("every backend draws at level " + formatNumber(mShared) +
+                          ", the emulated tessellator's maximum; backends that tessellate further also at " +
+                          formatNumber(mRequested));
+}
+
+Status CharacterBench::runBackend(const std::string& name) {
+    const Options run = mDriver.runOptions(name);
+    profiler::Profiler::global().clear();
+    auto created = RenderSession::create(run, mGround);
+    if (!created) return mDriver.skip(name, created.error(), mSummary.notes);
+    RenderSession& session = *created.value();
+    const Options& options = mDriver.options();
+    RowSetup setup;
+    setup.top = session.maxCharacterLevel();
+    if (!mDriver.comparing() && options.characterLevel && *options.characterLevel > setup.top)
+        return failSetting(setting::kCharacterLevel, " ", formatNumber(*options.characterLevel), ": backend ",
+                           session.capabilities().name, " tessellates up to level ", formatNumber(setup.top));
+    std::vector<float> levels = {std::min(mShared, setup.top)};
+    if (mRequested > levels.front() && mRequested <= setup.top) levels.push_back(mRequested);
+    session.setTerrainVisible(options.terrain);
+    auto settings = session.resolveTessellation(run);
+    if (!settings) return settings.error();
+    setup.settings = settings.value();
+    if (Status ok = session.createCharacters(mCrowd.assets()); !ok) return ok.error();
+    setup.camera.setPose(options.camera.value_or(mCrowd.orbitPose(kPoseSeconds)));
+    setup.camera.setAspect(float(session.width()) / float(session.height()));
+    setup.trace = mDriver.tracePath("characters-" + session.capabilities().name);
+    for (const float level : levels) {
+        mSummary.tableLevel = std::max(mSummary.tableLevel, double(level));
+        for (auto path : {backend::CharacterPath::TwoPass, backend::CharacterPath::SinglePass})
+            measureRow(session, setup, level, path);
+    }
+    return mDriver.writeTrace(setup.trace, session);
+}
+
+void CharacterBench::measureRow(RenderSession& session, const RowSetup& setup, float level,
+                                backend::CharacterPath path) {
+    auto& profiler = profiler::Profiler::global();
+    const uint32_t first = mFrameIndex;
+    const uint64_t rowStartNs = profiler.nowNs();
+    const bool displacement = mDriver.options().displacement;
+    const glm::vec3 clearColor = mDriver.options().clearColor;
+    mFrameIndex = mDriver.renderFrames(first, mSummary.warmupFrames + mSummary.frames, [&](uint32_t frame) {
+        // The paths themselves are measured: every character in view
+        // tessellated at the row's level, whatever the budget.
+        mCrowd.update(kPoseSeconds, setup.camera, {session.height(), setup.top, level, measureEveryCharacter()});
+        const backend::CharacterDrawInfo draw{mCrowd.items(), path, displacement};
+        session.renderFrame(frame, setup.camera, setup.settings, clearColor, false, false, &draw);
+    });
+    session.finish();
+    CharacterBenchRow& row = mSummary.rows.emplace_back();
+    row.backend = session.capabilities().name;
+    row.device = session.deviceName();
+    row.driver = session.driverName();
+    row.path = backend::toString(path);
+    row.level = level;
+    row.trace = setup.trace;
+    const backend::FrameReport report = session.lastFrameReport();
+    row.charactersDrawn = report.charactersDrawn;
+    row.cageTriangles = report.characterCageTriangles;
+    row.triangles = report.characterTriangles;
+    row.intermediateBytes = report.intermediateBytes;
+    summarizeRow(profiler, first + mSummary.warmupFrames, mFrameIndex, path, row);
+    mSummary.crowdMembers = std::max(mSummary.crowdMembers, row.charactersDrawn);
+    mDriver.markRow(row.path + " level " + formatNumber(level), first, rowStartNs);
+    log::info(row.backend + " " + row.path + " level " + formatNumber(level) + ": " +
+              std::to_string(row.characterMsMedian) + " ms, " + std::to_string(row.triangles) + " triangles");
+}
+
+Status CharacterBench::finish() {
+    if (!mSummary.rows.empty())
+        for (const CrowdAsset& asset : mCrowd.assets().all())
+            mSummary.assets.push_back(
+                assetFigures(asset, mShared, float(mSummary.paperLevel), float(mSummary.tableLevel)));
+    return mDriver.finish(mSummary.rows.size(), characterBenchJson(mSummary), characterBenchTable(mSummary));
 }
 
 } // namespace
 
 Status runCharacterBenchmark(const Options& options) {
-    auto& profiler = profiler::Profiler::global();
-    profiler.setEnabled(true);
     Options base = options;
     base.scene = "characters";
+    auto driver = BenchDriver::start(base, characterPlan());
+    if (!driver) return driver.error();
     auto loaded = World::load(base, 1);
     if (!loaded) return loaded.error();
-    terrain::Terrain& ground = loaded.value()->terrain();
     CharacterPopulation* crowd = loaded.value()->characters();
-    if (!crowd || crowd->assets().empty())
-        return fail("--bench characters: no characters to draw (--crowd 0 and no --model)");
-
-    const bool compare = options.backend == "all";
-    std::vector<std::string> backends;
-    if (compare)
-        backends = {kComparisonReference, "r2vb", "streamout"};
-    else if (!options.backend.empty())
-        backends.push_back(options.backend);
-    else
-        backends.assign(std::begin(kBackendPreference), std::end(kBackendPreference));
-
-    CharacterBenchSummary summary;
-    summary.width = options.width;
-    summary.height = options.height;
-    summary.warmupFrames = options.warmup ? options.warmup : 3;
-    summary.frames = options.frames ? options.frames : 10;
-    summary.poseSeconds = kPoseSeconds;
-    summary.paperLevel = paperAmplificationLevel(64.0f);
-    summary.paperLevelAmplification = double(trianglesPerCageTriangle(float(summary.paperLevel)));
-    const float requested = options.characterLevel.value_or(kHardwareLevel);
-    const float shared = std::min(requested, kSharedMaxLevel);
-    summary.sharedLevel = shared;
-    summary.tableLevel = shared;
-    if (requested > shared)
-        summary.notes.push_back("every backend draws at level " + formatNumber(shared) +
-                                ", the emulated tessellator's maximum; backends that tessellate further also at " +
-                                formatNumber(requested));
-
-    const std::filesystem::path traceDir = benchTraceDirectory(options);
-    if (!traceDir.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(traceDir, ec);
-        if (ec) return fail("--out-dir ", traceDir.string(), ": ", ec.message());
+    if (!crowd || crowd->assets().empty()) {
+        const Reporter& names = reporterFor(options);
+        return failSetting(setting::kCharacterBenchmark, ": no characters to draw (", names.name(setting::kCreatures),
+                           " 0 and no ", names.name(setting::kModels), ")");
     }
-
-    uint32_t frameIndex = 0;
-    for (const std::string& backendName : backends) {
-        Options run = base;
-        run.backend = backendName;
-        profiler.clear();
-        auto created = RenderSession::create(run, ground);
-        if (!created) {
-            if (!compare && backends.size() == 1) return created.error();
-            log::warning("skipping " + backendName + ": " + created.error().message);
-            summary.notes.push_back(backendName + " skipped: " + created.error().message);
-            continue;
-        }
-        RenderSession& session = *created.value();
-        const auto& caps = session.capabilities();
-        const float top = session.maxCharacterLevel();
-        if (!compare && options.characterLevel && *options.characterLevel > top)
-            return fail("--character-level ", formatNumber(*options.characterLevel), ": backend ", caps.name,
-                        " tessellates up to level ", formatNumber(top));
-        std::vector<float> levels = {std::min(shared, top)};
-        if (requested > levels.front() && requested <= top) levels.push_back(requested);
-        session.setTerrainVisible(options.terrain);
-        auto settings = session.resolveTessellation(run);
-        if (!settings) return settings.error();
-        if (Status ok = session.createCharacters(crowd->assets()); !ok) return ok.error();
-
-        scene::Camera camera;
-        camera.setPose(options.camera.value_or(crowd->orbitPose(kPoseSeconds)));
-        camera.setAspect(float(session.width()) / float(session.height()));
-        const std::string tracePath =
-            traceDir.empty() ? std::string() : (traceDir / ("bench-characters-" + caps.name + ".json")).string();
-        for (const float level : levels) {
-            summary.tableLevel = std::max(summary.tableLevel, double(level));
-            for (auto path : {backend::CharacterPath::TwoPass, backend::CharacterPath::SinglePass}) {
-                const uint32_t first = frameIndex;
-                const uint64_t rowStartNs = profiler.nowNs();
-                for (uint32_t f = 0; f < summary.warmupFrames + summary.frames; ++f, ++frameIndex) {
-                    profiler.beginFrame(frameIndex);
-                    // The paths themselves are measured: every character in view
-                    // tessellated at the row's level, whatever the budget.
-                    crowd->update(kPoseSeconds, camera, {session.height(), top, level, measureEveryCharacter()});
-                    const backend::CharacterDrawInfo draw{crowd->items(), path, options.displacement};
-                    session.renderFrame(frameIndex, camera, settings.value(), options.clearColor, false, false, &draw);
-                    profiler.endFrame();
-                }
-                session.finish();
-                CharacterBenchRow& row = summary.rows.emplace_back();
-                row.backend = caps.name;
-                row.device = session.deviceName();
-                row.driver = session.driverName();
-                row.path = backend::toString(path);
-                row.level = level;
-                row.trace = tracePath;
-                const backend::FrameReport report = session.lastFrameReport();
-                row.charactersDrawn = report.charactersDrawn;
-                row.cageTriangles = report.characterCageTriangles;
-                row.triangles = report.characterTriangles;
-                row.intermediateBytes = report.intermediateBytes;
-                summarizeRow(profiler, first + summary.warmupFrames, frameIndex, path, row);
-                summary.crowdMembers = std::max(summary.crowdMembers, row.charactersDrawn);
-                // One slice per row on the CPU track, so the trace reads as the table's rows.
-                const std::string label = row.path + " level " + formatNumber(level);
-                profiler.recordCpu({internBenchName(label), profiler::Profiler::currentThreadId(), first, rowStartNs,
-                                    profiler.nowNs() - rowStartNs, 0});
-                log::info(row.backend + " " + row.path + " level " + formatNumber(level) + ": " +
-                          std::to_string(row.characterMsMedian) + " ms, " + std::to_string(row.triangles) +
-                          " triangles");
-            }
-        }
-        if (!tracePath.empty()) {
-            if (auto w = writeBenchTrace(profiler, tracePath, "tessera bench characters", session); !w) return w;
-        }
-    }
-    profiler.clear();
-    if (summary.rows.empty()) return fail("--bench characters: no backend could run");
-    for (const CrowdAsset& asset : crowd->assets().all())
-        summary.assets.push_back(assetFigures(asset, shared, float(summary.paperLevel), float(summary.tableLevel)));
-    return writeOutputs(options, summary);
+    CharacterBench bench(driver.value(), loaded.value()->terrain(), *crowd);
+    bench.describe();
+    for (const std::string& backend : driver.value().backends())
+        if (Status ok = bench.runBackend(backend); !ok) return ok;
+    return bench.finish();
 }
 
 } // namespace tessera::runtime

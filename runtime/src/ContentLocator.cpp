@@ -33,7 +33,7 @@ Result<std::filesystem::path> locateContent(const std::string& contentDir, const
         searched += (searched.empty() ? "" : ", ") + candidate.string();
     }
     return fail("content file ", relative, " not found (looked in ", searched,
-                "); build the content with ./tessera build, or pass --content DIR");
+                "); build the content with ./tessera build, or give the directory it is in");
 }
 
 } // namespace tessera::runtime

@@ -1,10 +1,11 @@
 #include "CrowdBenchmark.h"
 
-#include "BenchOutputs.h"
+#include "BenchDriver.h"
 #include "CrowdBenchReport.h"
 #include "CrowdSetup.h"
 #include "tessera/runtime/World.h"
 #include "SystemInfo.h"
+#include "tessera/runtime/Settings.h"
 #include "tessera/core/Log.h"
 #include "tessera/core/ParallelFor.h"
 #include "tessera/terrain/MeteorShower.h"
@@ -18,7 +19,6 @@ namespace tessera::runtime {
 namespace {
 
 constexpr uint32_t kDefaultSizes[] = {1000, 10000, 65000};
-constexpr uint32_t kDefaultWarmup = 60;
 constexpr uint32_t kDefaultSteps = 300;
 /// measureOverlap() looks at every pair within reach, so it runs on every
 /// this many measured steps (untimed), and after the last.
@@ -109,9 +109,21 @@ Result<CrowdBenchRun> runSize(const terrain::HeightField& field, const crowd::Cr
     return run;
 }
 
+BenchPlan crowdSimPlan() {
+    BenchPlan plan;
+    plan.name = "crowd-sim";
+    plan.setting = setting::kCrowdSimBenchmark;
+    plan.warmup = 60;
+    plan.alwaysWarmUp = false;
+    plan.renders = false;
+    return plan;
+}
+
 } // namespace
 
 Status runCrowdBenchmark(const Options& options) {
+    auto driver = BenchDriver::start(options, crowdSimPlan());
+    if (!driver) return driver.error();
     auto field = loadDemoHeightField(options);
     if (!field) return field.error();
     crowd::CrowdSettings settings;
@@ -131,7 +143,7 @@ Status runCrowdBenchmark(const Options& options) {
     s.terrainDepth = field.value().worldSize().y;
     s.cellSize = settings.cellSize;
     s.timeStep = settings.timeStep;
-    s.warmupSteps = options.warmupGiven ? options.warmup : kDefaultWarmup;
+    s.warmupSteps = driver.value().warmup();
     s.steps = options.steps ? options.steps : kDefaultSteps;
     s.overlapEvery = kOverlapEvery;
     s.meteorIntervalSeconds = kMeteorIntervalSeconds;
@@ -158,7 +170,7 @@ Status runCrowdBenchmark(const Options& options) {
                       r.createMs, r.total.median, r.impacts);
         log::info(line);
     }
-    return writeBenchOutputs(options, crowdBenchJson(s), crowdBenchTable(s));
+    return driver.value().finish(s.runs.size(), crowdBenchJson(s), crowdBenchTable(s));
 }
 
 } // namespace tessera::runtime

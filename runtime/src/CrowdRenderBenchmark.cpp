@@ -1,15 +1,15 @@
 #include "CrowdRenderBenchmark.h"
 
-#include "tessera/runtime/BackendSelection.h"
-#include "BenchOutputs.h"
+#include "BenchDriver.h"
 #include "CrowdRenderBenchReport.h"
+#include "PassTimes.h"
 #include "tessera/runtime/SceneRun.h"
+#include "tessera/runtime/Settings.h"
 #include "tessera/core/Log.h"
 #include "tessera/profiler/Profiler.h"
 #include "tessera/scene/CameraPose.h"
 
 #include <algorithm>
-#include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
@@ -18,10 +18,22 @@ namespace tessera::runtime {
 namespace {
 
 constexpr uint32_t kDefaultSizes[] = {1000, 10000, 65000};
-constexpr uint32_t kDefaultWarmup = 10;
-constexpr uint32_t kDefaultFrames = 30;
 constexpr const char* kTierPasses[3] = {"crowd.near", "crowd.middle", "crowd.far"};
 constexpr const char* kTierCounters[3] = {"crowd near instances", "crowd middle instances", "crowd far instances"};
+
+BenchPlan crowdPlan() {
+    BenchPlan plan;
+    plan.name = "crowd";
+    plan.setting = setting::kCrowdBenchmark;
+    plan.comparison = {"hulldomain", "r2vb", "streamout"};
+    plan.everyPreferred = false;
+    plan.warmup = 10;
+    plan.frames = 30;
+    plan.alwaysWarmUp = false;
+    plan.width = 1920;
+    plan.height = 1080;
+    return plan;
+}
 
 /// Per frame in [first, end), the summed durations of the CPU scopes named `name`.
 std::vector<double> cpuScope(const profiler::Profiler& profiler, const char* name, uint64_t first, uint64_t end) {
@@ -52,46 +64,44 @@ std::vector<std::string> suspectPasses(const std::map<std::string, std::pair<dou
     return out;
 }
 
-void summarize(const profiler::Profiler& profiler, uint64_t first, uint64_t end, bool cpuDevice, CrowdRenderRow& row) {
-    std::map<uint64_t, double> gpuFrame;
-    std::vector<std::string> order;
-    std::map<std::string, std::vector<double>> ms, triangles;
+/// The row's GPU figures from the passes of frames [first, end): per pass,
+/// the crowd's passes grouped (culling and binning, skinning, each tier),
+/// the rest as the terrain's.
+void summarizeGpu(const profiler::Profiler& profiler, uint64_t first, uint64_t end, bool cpuDevice,
+                  CrowdRenderRow& row) {
+    PassTimes times;
+    std::map<std::string, std::vector<double>> triangles;
     for (const auto& pass : profiler.gpuPasses()) {
         if (pass.frame < first || pass.frame >= end) continue;
-        const double d = double(pass.durationNs) / 1e6;
-        gpuFrame[pass.frame] += d;
-        if (!ms.count(pass.name)) order.push_back(pass.name);
-        ms[pass.name].push_back(d);
+        times.add(pass, false, true);
         if (pass.stats) triangles[pass.name].push_back(double(pass.stats->clippingInvocations));
     }
-    std::vector<double> frames;
-    for (const auto& [f, d] : gpuFrame) frames.push_back(d);
-    row.gpuFrame = summarizeSeries(frames);
+    row.gpuFrame = summarizeSeries(times.frameTotals());
+    row.passes = times.passMedians();
     double crowdMs = 0.0;
     std::map<std::string, std::pair<double, double>> draws;
-    for (const std::string& name : order) {
-        const double median = summarizeSeries(ms[name]).median;
-        row.passes.emplace_back(name, median);
+    for (const auto& [name, median] : row.passes) {
         const double tri = summarizeSeries(triangles[name]).median;
         if (tri > 0.0) draws[name] = {median, tri};
         if (name.rfind("crowd.", 0) != 0) continue;
         crowdMs += median;
-        bool tier = false;
-        for (int t = 0; t < 3; ++t)
-            if (name == kTierPasses[t]) {
-                row.tierMs[size_t(t)] = median;
-                row.tierTriangles[size_t(t)] = tri;
-                tier = true;
-            }
-        if (tier) continue;
-        if (name == "crowd.skin")
+        const auto tier = std::find(std::begin(kTierPasses), std::end(kTierPasses), name);
+        if (tier != std::end(kTierPasses)) {
+            row.tierMs[size_t(tier - std::begin(kTierPasses))] = median;
+            row.tierTriangles[size_t(tier - std::begin(kTierPasses))] = tri;
+        } else if (name == "crowd.skin") {
             row.skinMs += median;
-        else
+        } else {
             row.cullBinMs += median;
+        }
     }
     row.terrainMs = std::max(0.0, row.gpuFrame.median - crowdMs);
     if (cpuDevice) row.suspectPasses = suspectPasses(draws, row.gpuFrame.median);
+}
 
+/// The row's CPU figures of frames [first, end): the frame, the crowd's
+/// simulation, LOD and instances, and the tiers' instances the GPU drew.
+void summarizeCpu(const profiler::Profiler& profiler, uint64_t first, uint64_t end, CrowdRenderRow& row) {
     std::vector<double> cpu;
     for (const auto& f : profiler.frameEvents())
         if (f.frame >= first && f.frame < end) cpu.push_back(double(f.durationNs) / 1e6);
@@ -106,110 +116,124 @@ void summarize(const profiler::Profiler& profiler, uint64_t first, uint64_t end,
     row.frames = uint32_t(end - first);
 }
 
-std::vector<std::string> backendsFor(const Options& options) {
-    if (options.backend == "all") return {"hulldomain", "r2vb", "streamout"};
-    return {options.backend}; // empty: RenderSession picks the device's best
+/// --bench crowd: each crowd size on each backend, the terrain alone
+/// after the first size.
+class CrowdRenderBench {
+public:
+    explicit CrowdRenderBench(const BenchDriver& driver) : mDriver(driver) {
+        const Options& options = driver.options();
+        mSummary.width = driver.width();
+        mSummary.height = driver.height();
+        mSummary.warmupFrames = driver.warmup();
+        mSummary.frames = driver.frames();
+        mSummary.meteors = options.meteors;
+        mSummary.terrain = options.heightmap.empty() ? "content/terrain/height.png" : options.heightmap;
+    }
+
+    /// The crowd of `agents` (0: the terrain alone) on every backend not
+    /// skipped yet; an error ends the benchmark.
+    Status runSize(uint32_t agents);
+    /// The rows in crowd-size order, then the outputs.
+    Status finish();
+
+private:
+    /// The crowd scene of `agents` (the terrain scene for 0) on `backend`,
+    /// from the size's camera.
+    Options rowOptions(const std::string& backend, uint32_t agents) const;
+    /// One row: warm-up and measured frames, their figures and trace.
+    Status measureRow(SceneRun& scene, uint32_t agents);
+
+    const BenchDriver& mDriver;
+    CrowdRenderSummary mSummary;
+    /// Each size is seen across its own crowd (unless the options fix the
+    /// camera); the terrain alone from the first size's camera.
+    std::optional<scene::CameraPose> mPose, mFirstPose;
+    std::set<std::string> mSkipped;
+};
+
+Options CrowdRenderBench::rowOptions(const std::string& backend, uint32_t agents) const {
+    Options run = mDriver.runOptions(backend);
+    run.scene = agents ? "crowd" : "terrain";
+    run.agents = agents ? std::vector<uint32_t>{agents} : std::vector<uint32_t>{};
+    run.camera = mPose;
+    run.meteors = agents ? mDriver.options().meteors : 0;
+    return run;
+}
+
+Status CrowdRenderBench::runSize(uint32_t agents) {
+    const Options& options = mDriver.options();
+    mPose = options.camera ? options.camera : (agents ? std::nullopt : mFirstPose);
+    for (const std::string& backend : mDriver.backends()) {
+        if (mSkipped.count(backend)) continue;
+        profiler::Profiler::global().clear();
+        auto created = SceneRun::create(rowOptions(backend, agents), mSummary.warmupFrames + mSummary.frames);
+        if (!created) {
+            if (Status skipped = mDriver.skip(backend, created.error(), mSummary.notes); !skipped) return skipped;
+            mSkipped.insert(backend);
+            continue;
+        }
+        SceneRun& scene = *created.value();
+        if (!mPose && scene.world().simulatedCrowd()) {
+            mPose = scene.world().simulatedCrowd()->acrossPose();
+            scene.world().fixCamera(*mPose);
+            if (!mFirstPose) mFirstPose = mPose;
+        }
+        if (Status ok = measureRow(scene, agents); !ok) return ok;
+    }
+    return {};
+}
+
+Status CrowdRenderBench::measureRow(SceneRun& scene, uint32_t agents) {
+    RenderSession& session = scene.session();
+    if (agents && !scene.instancedCrowd())
+        mSummary.notes.push_back(session.capabilities().name + " at " + std::to_string(agents) +
+                                 " agents: no instanced crowd on this backend (drawn with the character path)");
+    const uint32_t total = mDriver.renderFrames(0, mSummary.warmupFrames + mSummary.frames,
+                                                [&scene](uint32_t frame) { scene.renderFrame(frame, false); });
+    session.finish();
+    CrowdRenderRow& row = mSummary.rows.emplace_back();
+    row.backend = session.capabilities().name;
+    row.device = session.deviceName();
+    row.driver = session.driverName();
+    row.agents = agents;
+    row.crowdBytes = session.lastFrameReport().crowdBytes;
+    row.camera = scene::formatCameraPose(scene.camera().pose());
+    const auto& profiler = profiler::Profiler::global();
+    summarizeGpu(profiler, mSummary.warmupFrames, total, session.deviceClass() == lod::DeviceClass::Cpu, row);
+    summarizeCpu(profiler, mSummary.warmupFrames, total, row);
+    row.trace = mDriver.tracePath("crowd-" + row.backend + "-" +
+                                  (agents ? std::to_string(agents) : std::string("terrain")));
+    if (Status written = mDriver.writeTrace(row.trace, session); !written) return written;
+    log::info(row.backend + " " + (agents ? std::to_string(agents) + " agents" : std::string("terrain alone")) +
+              ": GPU " + formatNumber(row.gpuFrame.median) + " ms, CPU " + formatNumber(row.cpuFrame.median) + " ms");
+    return {};
+}
+
+Status CrowdRenderBench::finish() {
+    const Options& options = mDriver.options();
+    mSummary.camera = options.camera
+                          ? scene::formatCameraPose(*options.camera)
+                          : "across each crowd (SimulatedCrowd::acrossPose); the terrain alone from the first's";
+    std::stable_sort(mSummary.rows.begin(), mSummary.rows.end(),
+                     [](const CrowdRenderRow& a, const CrowdRenderRow& b) { return a.agents < b.agents; });
+    return mDriver.finish(mSummary.rows.size(), crowdRenderBenchJson(mSummary), crowdRenderBenchTable(mSummary));
 }
 
 } // namespace
 
 Status runCrowdRenderBenchmark(const Options& options) {
-    auto& profiler = profiler::Profiler::global();
-    profiler.setEnabled(true);
-    const bool compare = options.backend == "all";
+    auto driver = BenchDriver::start(options, crowdPlan());
+    if (!driver) return driver.error();
     const std::vector<uint32_t> sizes = options.agents.empty()
                                             ? std::vector<uint32_t>(std::begin(kDefaultSizes), std::end(kDefaultSizes))
                                             : options.agents;
-
-    CrowdRenderSummary summary;
-    summary.width = options.sizeGiven ? options.width : 1920;
-    summary.height = options.sizeGiven ? options.height : 1080;
-    summary.warmupFrames = options.warmupGiven ? options.warmup : kDefaultWarmup;
-    summary.frames = options.frames ? options.frames : kDefaultFrames;
-    summary.meteors = options.meteors;
-    summary.terrain = options.heightmap.empty() ? "content/terrain/height.png" : options.heightmap;
-    const uint32_t total = summary.warmupFrames + summary.frames;
-
-    const std::filesystem::path traceDir = benchTraceDirectory(options);
-    if (!traceDir.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(traceDir, ec);
-        if (ec) return fail("--out-dir ", traceDir.string(), ": ", ec.message());
-    }
-
-    // Each size is seen across its own crowd (unless --camera); the terrain
-    // alone runs after the first size, from its camera.
-    std::optional<scene::CameraPose> pose = options.camera, firstPose;
-    std::vector<uint32_t> order;
+    CrowdRenderBench bench(driver.value());
     for (size_t i = 0; i < sizes.size(); ++i) {
-        order.push_back(sizes[i]);
-        if (i == 0) order.push_back(0);
+        if (Status ok = bench.runSize(sizes[i]); !ok) return ok;
+        if (i == 0)
+            if (Status ok = bench.runSize(0); !ok) return ok;
     }
-    std::set<std::string> skipped;
-    for (const uint32_t agents : order) {
-        pose = options.camera ? options.camera : (agents ? std::nullopt : firstPose);
-        for (const std::string& backendName : backendsFor(options)) {
-            if (skipped.count(backendName)) continue;
-            Options run = options;
-            run.backend = backendName;
-            run.width = summary.width;
-            run.height = summary.height;
-            run.scene = agents ? "crowd" : "terrain";
-            run.agents = agents ? std::vector<uint32_t>{agents} : std::vector<uint32_t>{};
-            run.camera = pose;
-            run.meteors = agents ? options.meteors : 0;
-            profiler.clear();
-            auto created = SceneRun::create(run, total);
-            if (!created) {
-                if (!compare) return created.error();
-                log::warning("skipping " + backendName + ": " + created.error().message);
-                summary.notes.push_back(backendName + " skipped: " + created.error().message);
-                skipped.insert(backendName);
-                continue;
-            }
-            SceneRun& scene = *created.value();
-            RenderSession& session = scene.session();
-            if (!pose && scene.world().simulatedCrowd()) {
-                pose = scene.world().simulatedCrowd()->acrossPose();
-                scene.world().fixCamera(*pose);
-                if (!firstPose) firstPose = pose;
-            }
-            if (agents && !scene.instancedCrowd())
-                summary.notes.push_back(session.capabilities().name + " at " + std::to_string(agents) +
-                                        " agents: no instanced crowd on this backend (drawn with the character path)");
-            for (uint32_t f = 0; f < total; ++f) {
-                profiler.beginFrame(f);
-                scene.renderFrame(f, false);
-                profiler.endFrame();
-            }
-            session.finish();
-            CrowdRenderRow& row = summary.rows.emplace_back();
-            row.backend = session.capabilities().name;
-            row.device = session.deviceName();
-            row.driver = session.driverName();
-            row.agents = agents;
-            row.crowdBytes = session.lastFrameReport().crowdBytes;
-            row.camera = scene::formatCameraPose(scene.camera().pose());
-            summarize(profiler, summary.warmupFrames, total, session.deviceClass() == lod::DeviceClass::Cpu, row);
-            const std::string rowName =
-                "bench-crowd-" + row.backend + "-" + (agents ? std::to_string(agents) : std::string("terrain"));
-            if (!traceDir.empty()) {
-                row.trace = (traceDir / (rowName + ".json")).string();
-                if (auto w = writeBenchTrace(profiler, row.trace, "tessera bench crowd", session); !w) return w;
-            }
-            log::info(row.backend + " " + (agents ? std::to_string(agents) + " agents" : std::string("terrain alone")) +
-                      ": GPU " + formatNumber(row.gpuFrame.median) + " ms, CPU " + formatNumber(row.cpuFrame.median) +
-                      " ms");
-        }
-    }
-    profiler.clear();
-    if (summary.rows.empty()) return fail("--bench crowd: no backend could run");
-    summary.camera = options.camera
-                         ? scene::formatCameraPose(*options.camera)
-                         : "across each crowd (SimulatedCrowd::acrossPose); the terrain alone from the first's";
-    std::stable_sort(summary.rows.begin(), summary.rows.end(),
-                     [](const CrowdRenderRow& a, const CrowdRenderRow& b) { return a.agents < b.agents; });
-    return writeBenchOutputs(options, crowdRenderBenchJson(summary), crowdRenderBenchTable(summary));
+    return bench.finish();
 }
 
 } // namespace tessera::runtime

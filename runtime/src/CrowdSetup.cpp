@@ -1,6 +1,7 @@
 #include "CrowdSetup.h"
 
 #include "SystemInfo.h"
+#include "tessera/runtime/Settings.h"
 #include "tessera/profiler/CpuScope.h"
 
 #include <algorithm>
@@ -31,7 +32,7 @@ Status checkCrowdFits(const terrain::Terrain& terrain, const crowd::CrowdSetting
     const double total = double(need.agentBytes) + double(need.fieldBytes);
     if (total <= budget) return {};
     const double fit = std::max(0.0, (budget - double(need.fieldBytes)) / std::max(need.bytesPerAgent, 1.0));
-    return fail("--agents ", std::to_string(agents), ": the crowd needs about ", mib(total), " and this machine has ",
+    return failSetting(setting::kAgents, " ", std::to_string(agents), ": the crowd needs about ", mib(total), " and this machine has ",
                 mib(double(available)), " available (a crowd may take ", std::to_string(int(kMemoryShare * 100)),
                 "%); about ", std::to_string(uint64_t(fit)), " agents would fit");
 }

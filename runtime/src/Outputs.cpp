@@ -1,5 +1,6 @@
 #include "tessera/runtime/Outputs.h"
 
+#include "tessera/runtime/Settings.h"
 #include "tessera/core/ImageFile.h"
 #include "tessera/core/Log.h"
 #include "tessera/profiler/BenchmarkReport.h"
@@ -16,7 +17,7 @@ namespace {
 Status writeHeights(const Options& options, RenderSession& session, const terrain::Terrain& terrain) {
     const terrain::HeightField& field = terrain.field();
     auto gpu = session.readHeights();
-    if (!gpu) return fail("--dump-heights: ", gpu.error().message);
+    if (!gpu) return failSetting(setting::kHeightDump, ": ", gpu.error().message);
     const std::string gpuPath = options.dumpHeights + ".gpu.png";
     const std::string cpuPath = options.dumpHeights + ".cpu.png";
     if (auto w = terrain::saveHeightMapPng16(gpuPath, field.width(), field.height(), gpu.value()); !w) return w;
@@ -33,7 +34,7 @@ Status writeOutputs(const Options& options, RenderSession& session, const terrai
     const uint32_t width = session.width(), height = session.height();
     if (!options.screenshot.empty()) {
         if (pixels.empty())
-            return fail("--screenshot ", options.screenshot, ": the ", session.capabilities().name,
+            return failSetting(setting::kScreenshot, " ", options.screenshot, ": the ", session.capabilities().name,
                         " backend renders no pixels");
         if (auto w = writePng(options.screenshot, {width, height, pixels}); !w) return w;
         log::info("wrote " + options.screenshot);
@@ -49,7 +50,8 @@ Status writeOutputs(const Options& options, RenderSession& session, const terrai
         log::info("wrote " + options.capture);
     }
     if (!options.benchmark.empty()) {
-        profiler.discardFramesBefore(options.warmup);
+        const uint32_t warmup = options.warmup.value_or(0);
+        profiler.discardFramesBefore(warmup);
         auto summary = profiler::summarize(profiler);
         profiler::BenchmarkInfo info;
         info.backend = session.capabilities().name;
@@ -58,8 +60,8 @@ Status writeOutputs(const Options& options, RenderSession& session, const terrai
         info.scene = "terrain";
         info.width = width;
         info.height = height;
-        info.warmupFrames = options.warmup;
-        info.frames = frames > options.warmup ? frames - options.warmup : 0;
+        info.warmupFrames = warmup;
+        info.frames = frames > warmup ? frames - warmup : 0;
         if (auto w = profiler::writeBenchmarkJson(summary, info, profiler, options.benchmark); !w) return w;
         std::printf("%s", profiler::formatTable(summary).c_str());
         log::info("wrote " + options.benchmark);

@@ -1,6 +1,7 @@
 #include "OverlayContext.h"
 
 #include "tessera/runtime/RenderSession.h"
+#include "tessera/runtime/Settings.h"
 
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
@@ -13,7 +14,7 @@ static_assert(sizeof(ImDrawVert) == sizeof(gpu::UiVertex), "gpu::UiVertex must m
 static_assert(sizeof(ImDrawIdx) == sizeof(uint16_t), "the overlay draws 16-bit ImGui indices");
 
 Result<std::unique_ptr<OverlayContext>> OverlayContext::create(RenderSession& session) {
-    if (!session.device()) return fail("--overlay: the null backend draws nothing to put an overlay on");
+    if (!session.device()) return failSetting(setting::kOverlay, ": the null backend draws nothing to put an overlay on");
     std::unique_ptr<OverlayContext> overlay(new OverlayContext());
     IMGUI_CHECKVERSION();
     overlay->mContext = ImGui::CreateContext();
@@ -27,7 +28,7 @@ Result<std::unique_ptr<OverlayContext>> OverlayContext::create(RenderSession& se
     ImGui::GetStyle().Alpha = 0.92f;
     if (session.window()) {
         if (!ImGui_ImplGlfw_InitForVulkan(session.window(), true))
-            return fail("--window: the overlay could not bind the window's input");
+            return failSetting(setting::kWindow, ": the overlay could not bind the window's input");
         overlay->mGlfwBound = true;
     } else {
         // Headless: the target is the display, and nothing gives input.

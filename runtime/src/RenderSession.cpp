@@ -2,6 +2,8 @@
 
 #include "TerrainDetailTextures.h"
 
+#include "tessera/runtime/Reporter.h"
+#include "tessera/runtime/Settings.h"
 #include "tessera/runtime/World.h"
 #include "tessera/core/Log.h"
 #include "tessera/profiler/CpuScope.h"
@@ -16,11 +18,15 @@ namespace tessera::runtime {
 Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& options, terrain::Terrain& terrain) {
     std::unique_ptr<RenderSession> session(new RenderSession());
     session->mTerrain = &terrain;
+    session->mReporter = &reporterFor(options);
+    const Reporter& reporter = *session->mReporter;
     // Before the instance exists: RenderDoc's layer joins only instances
     // created after it is loaded.
     if (options.renderdocFrame) {
         auto loaded = gpu::RenderDoc::load(options.renderdocPath);
-        if (!loaded) log::warning("--renderdoc: " + loaded.error().message + "; rendering without a capture");
+        if (!loaded)
+            reporter.warning(failSetting(setting::kRenderDocFrame, ": ", loaded.error().message,
+                                         "; rendering without a capture"));
         else session->mRenderDoc = std::move(loaded.value());
     }
     auto selected = selectBackend(options);
@@ -28,9 +34,9 @@ Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& opti
         // RenderDoc's layer can hide what Tessera needs (Debian 12's RenderDoc
         // 1.24 reports lavapipe as Vulkan 1.2): a capture is not worth failing
         // the run for, so try again without the layer.
-        log::warning("--renderdoc: RenderDoc's layer (API " + session->mRenderDoc->version() +
-                     ") leaves no device Tessera can use (" + selected.error().message +
-                     "); rendering without a capture");
+        reporter.warning(failSetting(setting::kRenderDocFrame, ": RenderDoc's layer (API ",
+                                     session->mRenderDoc->version(), ") leaves no device Tessera can use (",
+                                     reporter.wording(selected.error()), "); rendering without a capture"));
         session->mRenderDoc->disableLayer();
         session->mRenderDoc.reset();
         selected = selectBackend(options);
@@ -44,13 +50,15 @@ Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& opti
         // unexplained (--hide-features can cause both on purpose).
         const auto& f = device->features();
         if (options.wireframe && !f.fillModeNonSolid)
-            log::warning("--wireframe: " + f.deviceName + " has no wireframe fill mode (fillModeNonSolid); drawing solid");
+            reporter.warning(failSetting(setting::kWireframe, ": ", f.deviceName,
+                                         " has no wireframe fill mode (fillModeNonSolid); drawing solid"));
         if (!f.timestamps && (!options.benchmark.empty() || !options.capture.empty() || !options.bench.empty()))
             log::warning(f.deviceName + " has no timestamp queries on its graphics queue: every GPU time in the "
                          "benchmark and the trace reads 0");
     }
     if (session->mRenderDoc && !session->mSelected->instance) {
-        log::warning("--renderdoc: backend " + session->capabilities().name + " records no GPU work to capture");
+        reporter.warning(failSetting(setting::kRenderDocFrame, ": backend ", session->capabilities().name,
+                                     " records no GPU work to capture"));
         session->mRenderDoc.reset();
     }
     if (session->mRenderDoc) {
@@ -59,11 +67,11 @@ Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& opti
                   std::to_string(*options.renderdocFrame));
     }
 
-    session->mWidth = options.width;
+    session->mWidth = options.width.value_or(kDefaultWidth);
     session->mLook = options.look;
     session->mTerrainShading = options.terrainShading;
     session->mSunDirection = options.sunDirection;
-    session->mHeight = options.height;
+    session->mHeight = options.height.value_or(kDefaultHeight);
     gpu::Device* device = session->mSelected->device.get();
     if (device) {
         if (options.window) {
@@ -146,8 +154,9 @@ void RenderSession::releaseBackend(Release release) {
 }
 
 Status RenderSession::requestCapture() {
-    if (!mRenderDoc) return fail("no RenderDoc capture: start with --renderdoc N (and RenderDoc installed) to capture "
-                                 "from the window");
+    if (!mRenderDoc)
+        return fail("no RenderDoc capture: start with ", mReporter->name(setting::kRenderDocFrame),
+                    " N (and RenderDoc installed) to capture from the window");
     mCaptureFrame = mFrameIndex + 1;
     return {};
 }
@@ -227,14 +236,15 @@ std::string RenderSession::driverName() const {
 
 Result<terrain::TessellationSettings> RenderSession::resolveTessellation(const Options& options) const {
     const auto& caps = capabilities();
-    terrain::TessellationSettings settings = options.tessellation;
+    const TessellationOptions& asked = options.tessellation;
+    terrain::TessellationSettings settings = asked.settings();
     if (options.terrainMode) {
         settings.mode = *options.terrainMode;
         if (!caps.drawsTerrainMode(settings.mode)) {
             std::ostringstream modes;
             for (auto m : {terrain::TerrainMode::LowRes, terrain::TerrainMode::Continuous, terrain::TerrainMode::Adaptive})
                 if (caps.drawsTerrainMode(m)) modes << (modes.tellp() > 0 ? ", " : "") << terrain::toString(m);
-            return fail("--terrain-mode ", terrain::toString(settings.mode), ": backend ", caps.name,
+            return failSetting(setting::kTerrainMode, " ", terrain::toString(settings.mode), ": backend ", caps.name,
                         " does not draw it (it draws: ", modes.str(), ")");
         }
     } else {
@@ -246,12 +256,12 @@ Result<terrain::TessellationSettings> RenderSession::resolveTessellation(const O
     // the defaults (64, 15) are clamped to the backend's maximum instead, as
     // D3D10-era hardware clamps to 14.99.
     const std::string top = formatNumber(caps.maxTessFactor);
-    if (options.tessMaxGiven && settings.maxLevel > caps.maxTessFactor)
-        return fail("--tess-max ", formatNumber(settings.maxLevel), ": backend ", caps.name, " tessellates up to level ",
-                    top);
-    if (settings.mode == terrain::TerrainMode::Continuous && options.tessLevelGiven &&
+    if (asked.maxLevel && settings.maxLevel > caps.maxTessFactor)
+        return failSetting(setting::kTessMax, " ", formatNumber(settings.maxLevel), ": backend ", caps.name,
+                           " tessellates up to level ", top);
+    if (settings.mode == terrain::TerrainMode::Continuous && asked.continuousLevel &&
         settings.continuousLevel > caps.maxTessFactor)
-        return fail("--tess-level ", formatNumber(settings.continuousLevel), ": backend ", caps.name,
+        return failSetting(setting::kTessLevel, " ", formatNumber(settings.continuousLevel), ": backend ", caps.name,
                     " tessellates up to level ", top);
     settings.maxLevel = std::min(settings.maxLevel, caps.maxTessFactor);
     settings.continuousLevel = std::min(settings.continuousLevel, caps.maxTessFactor);
@@ -358,7 +368,7 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
     }
     if (capture) {
         auto file = mRenderDoc->end(*mSelected->instance);
-        if (!file) log::warning("--renderdoc: " + file.error().message);
+        if (!file) mReporter->warning(failSetting(setting::kRenderDocFrame, ": ", file.error().message));
         else {
             mCaptureFile = file.value();
             log::info("RenderDoc capture of frame " + std::to_string(frameIndex) + ": " + mCaptureFile.string());

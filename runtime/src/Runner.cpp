@@ -10,6 +10,8 @@
 #include "tessera/runtime/InstancedCrowd.h"
 #include "LodSettings.h"
 #include "tessera/runtime/RenderSession.h"
+#include "tessera/runtime/Reporter.h"
+#include "tessera/runtime/Settings.h"
 #include "tessera/runtime/SceneRun.h"
 #include "TerrainBenchmark.h"
 #include "WindowController.h"
@@ -35,9 +37,10 @@ Status runFlythrough(const Options& options) {
 
     // --warmup frames run first and are discarded from the benchmark; --frames
     // counts the frames after them.
+    const uint32_t warmup = options.warmup.value_or(0);
     const uint32_t measured =
-        options.frames ? options.frames : (options.window ? UINT32_MAX - options.warmup : kDefaultHeadlessFrames);
-    const uint32_t frames = options.warmup + measured;
+        options.frames ? options.frames : (options.window ? UINT32_MAX - warmup : kDefaultHeadlessFrames);
+    const uint32_t frames = warmup + measured;
     auto created = SceneRun::create(options, frames);
     if (!created) return created.error();
     SceneRun& run = *created.value();
@@ -48,7 +51,7 @@ Status runFlythrough(const Options& options) {
     if (!options.record.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(options.record, ec);
-        if (ec) return fail("--record ", options.record, ": ", ec.message());
+        if (ec) return failSetting(setting::kRecord, " ", options.record, ": ", ec.message());
     }
     // --window: the overlay, the free camera and the controls (--no-overlay
     // keeps the plain window).
@@ -76,11 +79,14 @@ Status runFlythrough(const Options& options) {
     window.reset();
     const std::vector<uint8_t> pixels = session.finish();
     if (options.renderdocFrame && *options.renderdocFrame >= rendered)
-        log::warning("--renderdoc " + std::to_string(*options.renderdocFrame) + ": the run ended after " +
-                     std::to_string(rendered) + " frames, so nothing was captured");
+        reporterFor(options).warning(failSetting(setting::kRenderDocFrame, " ", std::to_string(*options.renderdocFrame),
+                                                 ": the run ended after ", std::to_string(rendered),
+                                                 " frames, so nothing was captured"));
     if (!options.crowdTiers.empty()) {
-        if (!instanced) return fail("--crowd-tiers: backend ", session.capabilities().name,
-                                    " draws no instanced crowd here (it needs --scene crowd)");
+        if (!instanced)
+            return failSetting(setting::kCrowdTiers, ": backend ", session.capabilities().name,
+                               " draws no instanced crowd here (it needs ", reporterFor(options).name(setting::kScene),
+                               " crowd)");
         auto tiers = session.readCrowdTiers();
         if (!tiers) return tiers.error();
         if (Status ok = instanced->writeTiers(options.crowdTiers, session.capabilities().name, tiers.value()); !ok)
@@ -92,36 +98,47 @@ Status runFlythrough(const Options& options) {
     return writeOutputs(options, session, scene.terrain(), pixels, rendered);
 }
 
+/// The run `options` ask for: the flythrough or a benchmark.
+Status run(const Options& options) {
+    return options.bench.empty()           ? runFlythrough(options)
+           : options.bench == "characters" ? runCharacterBenchmark(options)
+           : options.bench == "crowd-sim"  ? runCrowdBenchmark(options)
+           : options.bench == "crowd"      ? runCrowdRenderBenchmark(options)
+           : options.bench == "subdiv"     ? runSubdivBenchmark(options)
+                                           : runTerrainBenchmark(options);
+}
+
+/// What ran out, and what the caller can ask for instead, naming the
+/// settings as `reporter` does.
+Error outOfDeviceMemory(const OutOfDeviceMemory& e, const Reporter& reporter) {
+    auto name = [&reporter](const char* words) { return reporter.name(words); };
+    const std::string less = "ask for less (" + name(setting::kAgents) + ", " + name(setting::kFrameSize) + ", " +
+                             name(setting::kModels) + ", a smaller " + name(setting::kHeightMap) + ")";
+    return fail(e.what(), "; ",
+                e.capBytes() ? "raise it (" + name(setting::kDeviceMemoryCap) + ") or " + less
+                             : less + " or pick another " + name(setting::kDevice));
+}
+
 } // namespace
 
 int execute(const Options& options) {
+    const Reporter& reporter = reporterFor(options);
     if (options.listDevices || options.listBackends) {
         Status listed = options.listDevices ? listDevices(options) : listBackends(options);
-        if (!listed) {
-            log::error(listed.error().message);
-            return 1;
-        }
-        return 0;
+        if (!listed) reporter.error(listed.error());
+        return listed ? 0 : 1;
     }
     int code = 0;
     try {
-        Status ran = options.bench.empty()           ? runFlythrough(options)
-                     : options.bench == "characters" ? runCharacterBenchmark(options)
-                     : options.bench == "crowd-sim"  ? runCrowdBenchmark(options)
-                     : options.bench == "crowd"      ? runCrowdRenderBenchmark(options)
-                     : options.bench == "subdiv"     ? runSubdivBenchmark(options)
-                                                     : runTerrainBenchmark(options);
-        if (!ran) {
-            log::error(ran.error().message);
+        if (Status ran = run(options); !ran) {
+            reporter.error(ran.error());
             code = 1;
         }
     } catch (const OutOfDeviceMemory& e) {
         // Thrown by whichever allocation did not fit, at load time or in a
         // frame; by the time it lands here the run's objects have released
         // their GPU resources and the device is gone (core/OutOfDeviceMemory.h).
-        const std::string less = "ask for less (--agents, --width/--height, --model, a smaller --heightmap)";
-        log::error(std::string(e.what()) + "; " +
-                   (e.capBytes() ? "raise it (--device-memory-cap) or " + less : less + " or pick another --device"));
+        reporter.error(outOfDeviceMemory(e, reporter));
         code = 1;
     }
     if (options.validation) {

@@ -2,6 +2,8 @@
 
 #include "LodSettings.h"
 #include "ShadowCasters.h"
+#include "tessera/runtime/Reporter.h"
+#include "tessera/runtime/Settings.h"
 #include "tessera/core/Log.h"
 #include "tessera/profiler/CpuScope.h"
 #include "tessera/profiler/Profiler.h"
@@ -50,7 +52,7 @@ Status SceneRun::attachScene(const Options& options) {
     CharacterPopulation* characters = mWorld->characters();
     if (characters) {
         if (options.characterLevel && *options.characterLevel > session.maxCharacterLevel())
-            return fail("--character-level ", formatNumber(*options.characterLevel), ": backend ",
+            return failSetting(setting::kCharacterLevel, " ", formatNumber(*options.characterLevel), ": backend ",
                         session.capabilities().name, " tessellates up to level ",
                         formatNumber(session.maxCharacterLevel()));
         if (Status ok = session.createCharacters(characters->assets()); !ok) return ok.error();
@@ -68,21 +70,26 @@ Status SceneRun::attachScene(const Options& options) {
     }
     if (SubdivModels* surfaces = mWorld->surfaces()) {
         if (options.subdiv.level && *options.subdiv.level > session.capabilities().maxTessFactor)
-            return fail("--subdiv-level ", formatNumber(*options.subdiv.level), ": backend ",
+            return failSetting(setting::kSubdivLevel, " ", formatNumber(*options.subdiv.level), ": backend ",
                         session.capabilities().name, " tessellates up to level ",
                         formatNumber(session.capabilities().maxTessFactor));
         if (Status ok = session.createSubdivs(*surfaces); !ok) return ok.error();
     }
     if (SubdivCharacters* subdivCharacters = mWorld->subdivCharacters()) {
         if (!session.capabilities().subdiv)
-            return fail("--character-surface ", options.characterSurface, ": backend ", session.capabilities().name,
-                        " does not draw Catmull-Clark surfaces (BackendCapabilities::subdiv); use --backend "
-                        "hulldomain, or --character-surface planar");
+            return failSetting(setting::kCharacterSurface, " ", options.characterSurface, ": backend ",
+                               session.capabilities().name,
+                               " does not draw Catmull-Clark surfaces (BackendCapabilities::subdiv); use ",
+                               reporterFor(options).name(setting::kBackend), " hulldomain, or ",
+                               reporterFor(options).name(setting::kCharacterSurface), " planar");
         if (Status ok = session.createSubdivs(*subdivCharacters); !ok) return ok.error();
     }
     if (const SimulatedCrowd* simulated = mWorld->simulatedCrowd())
         std::printf("%s\n",
-                    simulated->drawingMode(session.capabilities().name, session.capabilities().requiresGpu).c_str());
+                    simulated
+                        ->drawingMode(session.capabilities().name, session.capabilities().requiresGpu,
+                                      reporterFor(options))
+                        .c_str());
     return {};
 }
 
@@ -100,11 +107,13 @@ Status SceneRun::switchBackend(const std::string& name) {
     // Levels the user gave for the first backend are clamped to the new one's
     // maximum instead of failing the switch.
     Options relaxed = mOptions;
-    relaxed.tessMaxGiven = false;
-    relaxed.tessLevelGiven = false;
+    const float top = mSession->capabilities().maxTessFactor;
+    TessellationOptions& levels = relaxed.tessellation;
+    if (levels.maxLevel) levels.maxLevel = std::min(*levels.maxLevel, top);
+    if (levels.continuousLevel) levels.continuousLevel = std::min(*levels.continuousLevel, top);
     if (relaxed.characterLevel)
         relaxed.characterLevel = std::min(*relaxed.characterLevel, mSession->maxCharacterLevel());
-    if (relaxed.subdiv.level) relaxed.subdiv.level = std::min(*relaxed.subdiv.level, mSession->capabilities().maxTessFactor);
+    if (relaxed.subdiv.level) relaxed.subdiv.level = std::min(*relaxed.subdiv.level, top);
     if (relaxed.terrainMode && !mSession->capabilities().drawsTerrainMode(*relaxed.terrainMode)) relaxed.terrainMode.reset();
     Status attached = attachScene(relaxed);
     return switched ? attached : switched;

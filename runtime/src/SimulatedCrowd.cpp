@@ -4,6 +4,8 @@
 
 #include "tessera/shaders/CrowdInstance.h"
 #include "CrowdSetup.h"
+#include "tessera/runtime/Reporter.h"
+#include "tessera/runtime/Settings.h"
 #include "tessera/core/Log.h"
 #include "tessera/core/ParallelFor.h"
 #include "tessera/profiler/CpuScope.h"
@@ -72,9 +74,9 @@ Result<std::unique_ptr<SimulatedCrowd>> SimulatedCrowd::create(const Options& op
     // walk, so it needs a skin and a clip (the gait check below then needs
     // the clip to cover ground).
     if (CharacterAssets::kFroblinSeeds + options.models.size() > TS_CROWD_MAX_CHARACTERS)
-        return fail("--model: a crowd mixes at most ", std::to_string(TS_CROWD_MAX_CHARACTERS), " creatures, ",
-                    std::to_string(CharacterAssets::kFroblinSeeds), " generated and ",
-                    std::to_string(options.models.size()), " --model files given");
+        return failSetting(setting::kModels, ": a crowd mixes at most ", std::to_string(TS_CROWD_MAX_CHARACTERS),
+                           " creatures, ", std::to_string(CharacterAssets::kFroblinSeeds), " generated and ",
+                           std::to_string(options.models.size()), " models given");
     for (const std::string& file : options.models) {
         if (Status ok = self->mAssets.add(file); !ok) return ok.error();
         const character::CharacterAsset& asset = self->mAssets.all().back().asset;
@@ -167,13 +169,13 @@ crowd::SpawnPattern SimulatedCrowd::spawnPattern(uint32_t seed) const {
     return pattern;
 }
 
-std::string SimulatedCrowd::drawingMode(const std::string& backend, bool gpu) const {
+std::string SimulatedCrowd::drawingMode(const std::string& backend, bool gpu, const Reporter& reporter) const {
     if (mInstancedActive)
         return "crowd: every agent drawn instanced, culled and sorted into LOD tiers " +
                std::string(gpu ? "on the GPU by " : "on the CPU by ") + backend;
     return mDrawCount ? "crowd: the " + std::to_string(mDrawCount) +
                             " nearest in view drawn with the character path (" + backend + " draws no instanced crowds)"
-                      : "crowd: none drawn (--crowd-draw 0)";
+                      : "crowd: none drawn (" + reporter.name(setting::kAgentsDrawn) + " 0)";
 }
 
 void SimulatedCrowd::step() {

@@ -1,19 +1,19 @@
 #include "SubdivBenchmark.h"
 
-#include "tessera/runtime/BackendSelection.h"
-#include "BenchOutputs.h"
+#include "BenchDriver.h"
 #include "BenchSeries.h"
-#include "tessera/runtime/SceneRun.h"
-#include "SubdivBenchReport.h"
 #include "CharacterBenchFigures.h"
+#include "PassTimes.h"
+#include "SubdivBenchReport.h"
 #include "TerrainBenchReport.h"
+#include "tessera/runtime/Reporter.h"
+#include "tessera/runtime/SceneRun.h"
+#include "tessera/runtime/Settings.h"
 #include "tessera/core/Log.h"
 #include "tessera/profiler/Profiler.h"
 #include "tessera/tessellator/ContinuousLevel.h"
 
 #include <algorithm>
-#include <filesystem>
-#include <map>
 
 namespace tessera::runtime {
 namespace {
@@ -38,41 +38,37 @@ bool hasPrefix(const std::string& name, const char* prefix) {
     return name.rfind(prefix, 0) == 0;
 }
 
+BenchPlan subdivPlan() {
+    BenchPlan plan;
+    plan.name = "subdiv";
+    plan.setting = setting::kSubdivBenchmark;
+    plan.comparison = {kComparisonReference, "streamout", "r2vb"};
+    return plan;
+}
+
 /// The row's GPU figures from the profiler's passes recorded since
 /// `firstPass` (each row is a new session, which numbers its frames from 0),
-/// of frames `warmup` on.
-/// `prefix` names the row's passes ("subdiv." or, for the planar creature,
-/// "character.").
+/// of frames `warmup` on. `prefix` names the row's passes ("subdiv." or, for
+/// the planar creature, "character.").
 void summarizeRow(const profiler::Profiler& profiler, size_t firstPass, uint64_t warmup, const char* prefix,
                   SubdivBenchRow& row) {
-    std::map<uint64_t, double> subdiv, frame;
-    std::vector<std::string> order;
-    std::map<std::string, std::vector<double>> perPass;
+    PassTimes times;
     const auto& passes = profiler.gpuPasses();
     for (size_t i = firstPass; i < passes.size(); ++i) {
         const auto& pass = passes[i];
         if (pass.frame < warmup) continue;
-        const double ms = double(pass.durationNs) / 1e6;
-        frame[pass.frame] += ms;
-        if (!hasPrefix(pass.name, prefix)) continue;
-        subdiv[pass.frame] += ms;
-        if (!perPass.count(pass.name)) order.push_back(pass.name);
-        perPass[pass.name].push_back(ms);
-        if (pass.stats && (pass.name == "subdiv.draw" || pass.name == "character.tessellate"))
+        const bool mine = hasPrefix(pass.name, prefix);
+        times.add(pass, mine, mine);
+        if (mine && pass.stats && (pass.name == "subdiv.draw" || pass.name == "character.tessellate"))
             row.clipped = pass.stats->clippingInvocations;
     }
-    auto values = [](const std::map<uint64_t, double>& m) {
-        std::vector<double> v;
-        for (const auto& [f, ms] : m) v.push_back(ms);
-        return v;
-    };
-    const BenchSeries s = summarizeSeries(values(subdiv));
+    const BenchSeries s = summarizeSeries(times.selectedTotals());
     row.gpuMsMedian = s.median;
     row.gpuMsMin = s.min;
     row.gpuMsMax = s.max;
-    row.gpuFrameMsMedian = summarizeSeries(values(frame)).median;
-    row.frames = uint32_t(subdiv.size());
-    for (const std::string& name : order) row.passes.emplace_back(name, summarizeSeries(perPass[name]).median);
+    row.gpuFrameMsMedian = summarizeSeries(times.frameTotals()).median;
+    row.frames = times.selectedFrames();
+    row.passes = times.passMedians();
 }
 
 /// The scene a shape variant draws: the .obj surfaces alone, still, no budget.
@@ -113,37 +109,6 @@ Options creatureOptions(const Options& options, const std::string& backend, cons
     return run;
 }
 
-/// A measured row and the run that drew it (kept until the trace is written).
-struct Measured {
-    std::unique_ptr<SceneRun> run;
-    SubdivBenchRow row;
-};
-
-/// Draws `warmup` + `frames` frames of `options` and summarizes the passes
-/// named `prefix`.
-Result<Measured> measure(const Options& options, const char* variant, float level, const char* prefix,
-                         uint32_t warmup, uint32_t frames) {
-    auto& profiler = profiler::Profiler::global();
-    auto created = SceneRun::create(options, warmup + frames);
-    if (!created) return created.error();
-    Measured m{std::move(created.value()), {}};
-    RenderSession& session = m.run->session();
-    const size_t firstPass = profiler.gpuPasses().size();
-    for (uint32_t f = 0; f < warmup + frames; ++f) {
-        profiler.beginFrame(f);
-        m.run->renderFrame(f, false);
-        profiler.endFrame();
-    }
-    session.finish();
-    m.row.backend = session.capabilities().name;
-    m.row.device = session.deviceName();
-    m.row.driver = session.driverName();
-    m.row.variant = variant;
-    m.row.level = level;
-    summarizeRow(profiler, firstPass, warmup, prefix, m.row);
-    return m;
-}
-
 /// The planar level whose triangles come nearest `triangles` over
 /// `cageTriangles` cage triangles, within [1, cap].
 float equalTriangleLevel(uint64_t triangles, uint64_t cageTriangles, float cap) {
@@ -169,121 +134,171 @@ SubdivMemory memoryOf(const SubdivModels& surfaces) {
     return m;
 }
 
+/// A measured row and the run that drew it (kept until the trace is written).
+struct Measured {
+    std::unique_ptr<SceneRun> run;
+    SubdivBenchRow row;
+};
+
+/// --bench subdiv on each of its backends: the shape variants at each
+/// level, then the creature by both papers.
+class SubdivBench {
+public:
+    explicit SubdivBench(const BenchDriver& driver) : mDriver(driver) {
+        const Options& options = driver.options();
+        mSummary.width = driver.width();
+        mSummary.height = driver.height();
+        mSummary.warmupFrames = driver.warmup();
+        mSummary.frames = driver.frames();
+        mSummary.surfaces = options.surfaces;
+        mSummary.surfaces.insert(mSummary.surfaces.end(), options.models.begin(), options.models.end());
+        mRequested = options.subdiv.level.value_or(kSharedLevel);
+    }
+
+    /// Every row of backend `name`, then its trace; an error ends the benchmark.
+    Status runBackend(const std::string& name);
+    /// The outputs.
+    Status finish();
+
+private:
+    /// Draws the frames of `options` and summarizes the passes named `prefix`.
+    Result<Measured> measure(const Options& options, const char* variant, float level, const char* prefix) const;
+    /// Logs a measured row and keeps it; the error of one that failed.
+    Status record(Result<Measured> measured);
+    /// The .obj surfaces in every variant and level.
+    Status measureShapes(const std::string& backend);
+    /// The creature by the second paper (its Catmull-Clark cage and tiles)
+    /// and by the first (its planar cage, displacement and normal maps) at
+    /// equal triangle counts.
+    Status measureCreature(const std::string& backend);
+
+    const BenchDriver& mDriver;
+    SubdivBenchSummary mSummary;
+    float mRequested = kSharedLevel;
+    std::vector<Measured> mDone; ///< this backend's rows; their sessions live until the trace is written
+};
+
+Result<Measured> SubdivBench::measure(const Options& options, const char* variant, float level,
+                                      const char* prefix) const {
+    auto& profiler = profiler::Profiler::global();
+    const uint32_t total = mDriver.warmup() + mDriver.frames();
+    auto created = SceneRun::create(options, total);
+    if (!created) return created.error();
+    Measured m{std::move(created.value()), {}};
+    RenderSession& session = m.run->session();
+    const size_t firstPass = profiler.gpuPasses().size();
+    mDriver.renderFrames(0, total, [&m](uint32_t frame) { m.run->renderFrame(frame, false); });
+    session.finish();
+    m.row.backend = session.capabilities().name;
+    m.row.device = session.deviceName();
+    m.row.driver = session.driverName();
+    m.row.variant = variant;
+    m.row.level = level;
+    summarizeRow(profiler, firstPass, mDriver.warmup(), prefix, m.row);
+    return m;
+}
+
+Status SubdivBench::record(Result<Measured> measured) {
+    if (!measured) return measured.error();
+    const SubdivBenchRow& row = measured.value().row;
+    log::info(row.backend + " " + row.variant + ": " + std::to_string(row.gpuMsMedian) + " ms, " +
+              std::to_string(row.triangles) + " triangles");
+    mDone.push_back(std::move(measured.value()));
+    return {};
+}
+
+Status SubdivBench::measureShapes(const std::string& backend) {
+    if (mDriver.options().surfaces.empty()) return {};
+    const Options base = mDriver.runOptions(backend);
+    for (const Variant& variant : kVariants) {
+        std::vector<float> levels = {std::min(mRequested, kSharedLevel)};
+        if (mRequested > kSharedLevel) levels.push_back(mRequested);
+        if (variant.adaptive) levels = {0.0f};
+        for (const float level : levels) {
+            auto m = measure(variantOptions(base, backend, variant, level), variant.name, level, "subdiv.");
+            // A level above the shared one is for backends that tessellate
+            // that far; the others skip it.
+            if (!m && level > kSharedLevel) continue;
+            if (m && level > m.value().run->session().capabilities().maxTessFactor) continue;
+            if (m) {
+                const SubdivModels* surfaces = m.value().run->world().surfaces();
+                m.value().row.triangles = surfaces ? surfaces->predictedTriangles() : 0;
+                m.value().row.domains = surfaces ? surfaces->domainCount() : 0;
+                if (surfaces && variant.displaced && mSummary.memory.coefficients == 0)
+                    mSummary.memory = memoryOf(*surfaces);
+            }
+            if (Status ok = record(std::move(m)); !ok) return ok;
+        }
+    }
+    return {};
+}
+
+Status SubdivBench::measureCreature(const std::string& backend) {
+    const Options& options = mDriver.options();
+    if (options.models.empty()) return {};
+    const Options base = mDriver.runOptions(backend);
+    const float level = std::min(mRequested, kSharedLevel);
+    auto cc = measure(creatureOptions(base, backend, "catmull-clark", level), "creature-cc", level, "subdiv.");
+    if (!cc) return cc.error();
+    const SubdivCharacters* characters = cc.value().run->world().subdivCharacters();
+    if (!characters)
+        return failSetting(setting::kSubdivBenchmark, ": ", reporterFor(options).name(setting::kModels), " ",
+                           options.models.front(), " is not a creature");
+    SubdivBenchRow& row = cc.value().row;
+    row.triangles = characters->predictedTriangles();
+    // The level the budget left (the fixed level after scaling).
+    if (!characters->draws().empty()) row.level = characters->draws().front().info.uniforms.lod.w;
+    row.domains = characters->domainCount();
+    const float planarLevel = equalTriangleLevel(row.triangles, characters->cageTriangles(),
+                                                 cc.value().run->session().maxCharacterLevel());
+    if (Status ok = record(std::move(cc)); !ok) return ok;
+    auto planar = measure(creatureOptions(base, backend, "planar", planarLevel), "creature-planar", planarLevel,
+                          "character.");
+    if (planar) planar.value().row.triangles = planar.value().run->session().lastFrameReport().characterTriangles;
+    return record(std::move(planar));
+}
+
+Status SubdivBench::runBackend(const std::string& name) {
+    profiler::Profiler::global().clear();
+    mDone.clear();
+    Status ran = measureShapes(name);
+    if (ran) ran = measureCreature(name);
+    if (!ran)
+        if (Status skipped = mDriver.skip(name, ran.error(), mSummary.notes); !skipped) return skipped;
+    if (mDone.empty()) return {};
+    const std::string trace = mDriver.tracePath("subdiv-" + name);
+    for (Measured& m : mDone) {
+        m.row.trace = trace;
+        mSummary.rows.push_back(m.row);
+    }
+    Status written = mDriver.writeTrace(trace, mDone.back().run->session());
+    mDone.clear();
+    return written;
+}
+
+Status SubdivBench::finish() {
+    if (!mSummary.rows.empty())
+        mSummary.notes.push_back(
+            "GPU ms: the subdivision passes (refine, levels, draw) of every surface, or the planar creature's "
+            "character passes (skin, tessellate); triangles: the CPU reference's prediction for surfaces, the frame "
+            "report's for the planar creature");
+    return mDriver.finish(mSummary.rows.size(), subdivBenchJson(mSummary), subdivBenchTable(mSummary));
+}
+
 } // namespace
 
 Status runSubdivBenchmark(const Options& options) {
-    if (options.surfaces.empty() && options.models.empty())
-        return fail("--bench subdiv: give the surfaces with --model FILE.obj (and creatures with --model FILE.glb)");
-    auto& profiler = profiler::Profiler::global();
-    profiler.setEnabled(true);
-    const bool compare = options.backend == "all";
-    std::vector<std::string> backends;
-    if (compare)
-        backends = {kComparisonReference, "streamout", "r2vb"};
-    else if (!options.backend.empty())
-        backends.push_back(options.backend);
-    else
-        backends.assign(std::begin(kBackendPreference), std::end(kBackendPreference));
-
-    SubdivBenchSummary summary;
-    summary.width = options.width;
-    summary.height = options.height;
-    summary.warmupFrames = options.warmup ? options.warmup : 3;
-    summary.frames = options.frames ? options.frames : 10;
-    summary.surfaces = options.surfaces;
-    summary.surfaces.insert(summary.surfaces.end(), options.models.begin(), options.models.end());
-    const float requested = options.subdiv.level.value_or(kSharedLevel);
-    const std::filesystem::path traceDir = benchTraceDirectory(options);
-    if (!traceDir.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(traceDir, ec);
-        if (ec) return fail("--out-dir ", traceDir.string(), ": ", ec.message());
+    if (options.surfaces.empty() && options.models.empty()) {
+        const std::string model = reporterFor(options).name(setting::kModels);
+        return failSetting(setting::kSubdivBenchmark, ": give the surfaces with ", model,
+                           " FILE.obj (and creatures with ", model, " FILE.glb)");
     }
-    const uint32_t warmup = summary.warmupFrames, frames = summary.frames;
-
-    for (const std::string& backendName : backends) {
-        profiler.clear();
-        std::vector<Measured> done; // their sessions stay alive until the trace is written
-        auto record = [&](Result<Measured> measured) -> Status {
-            if (!measured) return measured.error();
-            const SubdivBenchRow& row = measured.value().row;
-            log::info(row.backend + " " + row.variant + ": " + std::to_string(row.gpuMsMedian) + " ms, " +
-                      std::to_string(row.triangles) + " triangles");
-            done.push_back(std::move(measured.value()));
-            return {};
-        };
-        Status ran = [&]() -> Status {
-            for (const Variant& variant : kVariants) {
-                if (options.surfaces.empty()) break;
-                std::vector<float> levels = {std::min(requested, kSharedLevel)};
-                if (requested > kSharedLevel) levels.push_back(requested);
-                if (variant.adaptive) levels = {0.0f};
-                for (const float level : levels) {
-                    auto m = measure(variantOptions(options, backendName, variant, level), variant.name, level,
-                                     "subdiv.", warmup, frames);
-                    // A level above the shared one is for backends that
-                    // tessellate that far; the others skip it.
-                    if (!m && level > kSharedLevel) continue;
-                    if (m && level > m.value().run->session().capabilities().maxTessFactor) continue;
-                    if (m) {
-                        const SubdivModels* surfaces = m.value().run->world().surfaces();
-                        m.value().row.triangles = surfaces ? surfaces->predictedTriangles() : 0;
-                        m.value().row.domains = surfaces ? surfaces->domainCount() : 0;
-                        if (surfaces && variant.displaced && summary.memory.coefficients == 0)
-                            summary.memory = memoryOf(*surfaces);
-                    }
-                    if (Status ok = record(std::move(m)); !ok) return ok;
-                }
-            }
-            if (options.models.empty()) return {};
-            // The creature by the second paper (its Catmull-Clark cage and
-            // tiles) and by the first (its planar cage, displacement and
-            // normal maps) at equal triangle counts.
-            const float level = std::min(requested, kSharedLevel);
-            auto cc = measure(creatureOptions(options, backendName, "catmull-clark", level), "creature-cc", level,
-                              "subdiv.", warmup, frames);
-            if (!cc) return cc.error();
-            const SubdivCharacters* characters = cc.value().run->world().subdivCharacters();
-            if (!characters) return fail("--bench subdiv: --model ", options.models.front(), " is not a creature");
-            cc.value().row.triangles = characters->predictedTriangles();
-            // The level the budget left (the fixed level after scaling).
-            if (!characters->draws().empty()) cc.value().row.level = characters->draws().front().info.uniforms.lod.w;
-            cc.value().row.domains = characters->domainCount();
-            const uint64_t triangles = cc.value().row.triangles;
-            const uint64_t cageTriangles = characters->cageTriangles();
-            const float cap = cc.value().run->session().maxCharacterLevel();
-            if (Status ok = record(std::move(cc)); !ok) return ok;
-            const float planarLevel = equalTriangleLevel(triangles, cageTriangles, cap);
-            auto planar = measure(creatureOptions(options, backendName, "planar", planarLevel), "creature-planar",
-                                  planarLevel, "character.", warmup, frames);
-            if (planar) {
-                const backend::FrameReport report = planar.value().run->session().lastFrameReport();
-                planar.value().row.triangles = report.characterTriangles;
-            }
-            return record(std::move(planar));
-        }();
-        if (!ran) {
-            if (!compare) return ran;
-            log::warning("skipping " + backendName + ": " + ran.error().message);
-            summary.notes.push_back(backendName + " skipped: " + ran.error().message);
-        }
-        if (done.empty()) continue;
-        const std::string tracePath =
-            traceDir.empty() ? std::string() : (traceDir / ("bench-subdiv-" + backendName + ".json")).string();
-        for (Measured& m : done) {
-            m.row.trace = tracePath;
-            summary.rows.push_back(m.row);
-        }
-        if (!tracePath.empty())
-            if (Status w = writeBenchTrace(profiler, tracePath, "tessera bench subdiv", done.back().run->session()); !w)
-                return w;
-    }
-    profiler.clear();
-    if (summary.rows.empty()) return fail("--bench subdiv: no backend could run");
-    summary.notes.push_back("GPU ms: the subdivision passes (refine, levels, draw) of every surface, or the planar "
-                            "creature's character passes (skin, tessellate); triangles: the CPU reference's "
-                            "prediction for surfaces, the frame report's for the planar creature");
-    return writeBenchOutputs(options, subdivBenchJson(summary), subdivBenchTable(summary));
+    auto driver = BenchDriver::start(options, subdivPlan());
+    if (!driver) return driver.error();
+    SubdivBench bench(driver.value());
+    for (const std::string& backend : driver.value().backends())
+        if (Status ok = bench.runBackend(backend); !ok) return ok;
+    return bench.finish();
 }
 
 } // namespace tessera::runtime

@@ -1,28 +1,41 @@
 #include "TerrainBenchmark.h"
 
-#include "tessera/runtime/BackendSelection.h"
-#include "tessera/runtime/World.h"
-#include "BenchOutputs.h"
-#include "tessera/runtime/RenderSession.h"
+#include "BenchDriver.h"
 #include "TerrainBenchReport.h"
+#include "tessera/runtime/Reporter.h"
+#include "tessera/runtime/Settings.h"
+#include "tessera/runtime/World.h"
 #include "tessera/core/Log.h"
-#include "tessera/gpu/Instance.h"
 #include "tessera/profiler/BenchmarkReport.h"
 #include "tessera/profiler/Profiler.h"
-#include "tessera/profiler/TraceWriter.h"
 #include "tessera/tessellator/ContinuousLevel.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <set>
 #include <sstream>
 
 namespace tessera::runtime {
 
 namespace {
+
+/// The emulated tessellator's largest level: the common cap of --backend all.
+constexpr float kComparisonMaxLevel = tessellator::ContinuousLevel::kMaxLevel;
+
+BenchPlan terrainPlan() {
+    BenchPlan plan;
+    plan.name = "terrain";
+    plan.setting = setting::kTerrainBenchmark;
+    plan.comparison = {kComparisonReference, "r2vb", "streamout"};
+    plan.everyDevice = true;
+    return plan;
+}
+
+/// A level as the messages and notes print it.
+std::string level(float value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
 
 struct BenchView {
     const char* name;
@@ -45,33 +58,21 @@ std::vector<BenchView> benchViews(const terrain::Terrain& ground) {
     return {{"far", lookFrom(far, centre, -22.0f)}, {"close", lookFrom(close, size * 0.75f, -12.0f)}};
 }
 
-Result<std::vector<std::string>> deviceSelectors(const Options& options) {
-    if (!options.device.empty()) return std::vector<std::string>{options.device};
-    gpu::InstanceOptions io;
-    io.validation = options.validation;
-    auto instance = gpu::Instance::create(io);
-    if (!instance) return instance.error();
-    std::vector<std::string> selectors;
-    for (const auto& d : instance.value()->devices()) selectors.push_back(std::to_string(d.index));
-    return selectors;
-}
-
-/// The options of each row of one backend: every mode it draws, adaptive once per metric
-/// (or only --tess-metric's), each metric at its default target unless
-/// --tess-target was given.
+/// The options of each row of one backend: every mode it draws, adaptive
+/// once per metric (or only the options' metric), each metric at its
+/// default target unless the options give one.
 std::vector<Options> benchRuns(const Options& options, const backend::BackendCapabilities& caps) {
     std::vector<Options> runs;
     for (auto mode : {terrain::TerrainMode::LowRes, terrain::TerrainMode::Continuous, terrain::TerrainMode::Adaptive}) {
         if (!caps.drawsTerrainMode(mode)) continue;
-        std::vector<terrain::TessMetric> metrics = {options.tessellation.metric};
-        if (mode == terrain::TerrainMode::Adaptive && !options.tessMetricGiven)
+        std::vector<std::optional<terrain::TessMetric>> metrics = {options.tessellation.metric};
+        if (mode == terrain::TerrainMode::Adaptive && !options.tessellation.metric)
             metrics = {terrain::TessMetric::ScreenEdge, terrain::TessMetric::HeightDetail,
                        terrain::TessMetric::Distance, terrain::TessMetric::Silhouette};
         for (auto metric : metrics) {
             Options run = options;
             run.terrainMode = mode;
             run.tessellation.metric = metric;
-            if (!options.tessTargetGiven) run.tessellation.targetPixels = terrain::defaultTargetPixels(metric);
             runs.push_back(std::move(run));
         }
     }
@@ -109,7 +110,6 @@ profiler::BenchmarkSummary summarizeFrames(const profiler::Profiler& source, uin
     summary.frames = std::max<size_t>(summary.frames, ns.size());
     return summary;
 }
-
 TerrainBenchRecord makeRecord(const RenderSession& session, const char* view,
                               const terrain::TessellationSettings& settings, const profiler::BenchmarkSummary& summary) {
     TerrainBenchRecord r;
@@ -155,135 +155,142 @@ TerrainBenchRecord makeRecord(const RenderSession& session, const char* view,
     return r;
 }
 
-/// The emulated tessellator's largest level: the common cap of --backend all.
-constexpr float kComparisonMaxLevel = tessellator::ContinuousLevel::kMaxLevel;
+/// --bench terrain on each device and backend: both views, every row of
+/// benchRuns, in each look asked for.
+class TerrainBench {
+public:
+    TerrainBench(const BenchDriver& driver, terrain::Terrain& ground) : mDriver(driver), mGround(ground) {
+        mLooks = {driver.options().look};
+        // --look both: each row twice, plain then full, on the same session.
+        if (driver.options().benchBothLooks) mLooks = {backend::Look::Plain, backend::Look::Full};
+    }
+
+    /// A note for the table under the comparison.
+    void note(std::string text) { mNotes.push_back(std::move(text)); }
+    /// Every row of `backend` on `device`; an error ends the benchmark.
+    Status runBackend(const std::string& device, const std::string& backend);
+    /// The JSON and the tables.
+    Status finish() const;
+
+private:
+    /// `run`'s levels as every row of `caps`'s backend draws them: the
+    /// comparison's common cap, and the backend's maximum instead of an
+    /// error for a level above it.
+    Options cappedLevels(Options run, const backend::BackendCapabilities& caps) const;
+    /// The modes the backend does not draw, as a note.
+    void noteMissingModes(const RenderSession& session);
+    /// One row: warm-up and measured frames from `camera` with `settings`
+    /// in `look`, then its record.
+    void measureRow(RenderSession& session, const scene::Camera& camera, const char* view,
+                    const terrain::TessellationSettings& settings, backend::Look look, const std::string& trace);
+
+    const BenchDriver& mDriver;
+    terrain::Terrain& mGround;
+    std::vector<backend::Look> mLooks;
+    std::vector<TerrainBenchRecord> mRecords;
+    std::vector<std::string> mNotes;
+    uint32_t mFrameIndex = 0;
+};
+
+Options TerrainBench::cappedLevels(Options run, const backend::BackendCapabilities& caps) const {
+    TessellationOptions& levels = run.tessellation;
+    const float common = mDriver.comparing() ? kComparisonMaxLevel : caps.maxTessFactor;
+    levels.maxLevel = std::min(levels.maxLevel.value_or(common), caps.maxTessFactor);
+    levels.continuousLevel =
+        std::min({levels.continuousLevel.value_or(terrain::TessellationSettings{}.continuousLevel), common,
+                  caps.maxTessFactor});
+    return run;
+}
+
+void TerrainBench::noteMissingModes(const RenderSession& session) {
+    const auto& caps = session.capabilities();
+    std::string modes;
+    for (auto mode : {terrain::TerrainMode::Continuous, terrain::TerrainMode::Adaptive})
+        if (!caps.drawsTerrainMode(mode)) modes += (modes.empty() ? "" : ", ") + std::string(terrain::toString(mode));
+    if (!modes.empty()) mNotes.push_back(caps.name + " on " + session.deviceName() + " does not draw " + modes);
+}
+
+Status TerrainBench::runBackend(const std::string& device, const std::string& backend) {
+    profiler::Profiler::global().clear();
+    auto created = RenderSession::create(mDriver.runOptions(backend, device), mGround);
+    if (!created) return mDriver.skip(backend, created.error(), mNotes, device);
+    RenderSession& session = *created.value();
+    const auto& caps = session.capabilities();
+    const Options run = cappedLevels(mDriver.runOptions(backend, device), caps);
+    noteMissingModes(session);
+    const std::string trace =
+        mDriver.tracePath(caps.name + (mDriver.devices().size() > 1 ? "-device" + device : std::string()));
+    const size_t firstRecord = mRecords.size();
+    for (const BenchView& view : benchViews(mGround)) {
+        scene::Camera camera;
+        camera.setPose(view.pose);
+        camera.setAspect(float(session.width()) / float(session.height()));
+        for (const Options& row : benchRuns(run, caps)) {
+            auto settings = session.resolveTessellation(row);
+            if (!settings) return settings.error();
+            for (const backend::Look look : mLooks) measureRow(session, camera, view.name, settings.value(), look, trace);
+        }
+    }
+    return mRecords.size() > firstRecord ? mDriver.writeTrace(trace, session) : Status{};
+}
+
+void TerrainBench::measureRow(RenderSession& session, const scene::Camera& camera, const char* view,
+                              const terrain::TessellationSettings& settings, backend::Look look,
+                              const std::string& trace) {
+    auto& profiler = profiler::Profiler::global();
+    session.setLook(look);
+    const uint32_t first = mFrameIndex;
+    const uint64_t rowStartNs = profiler.nowNs();
+    const glm::vec3 clearColor = mDriver.options().clearColor;
+    mFrameIndex = mDriver.renderFrames(first, mDriver.warmup() + mDriver.frames(), [&](uint32_t frame) {
+        session.renderFrame(frame, camera, settings, clearColor, false, false);
+        // Inside the frame rather than after it: the sample carries its frame.
+        profiler.recordCounter(
+            {"intermediate bytes", frame, profiler.nowNs(), double(session.lastFrameReport().intermediateBytes)});
+    });
+    session.finish();
+    const auto summary = summarizeFrames(profiler, first + mDriver.warmup(), mFrameIndex);
+    mRecords.push_back(makeRecord(session, view, settings, summary));
+    TerrainBenchRecord& r = mRecords.back();
+    r.look = look == backend::Look::Plain ? "plain" : "full";
+    r.trace = trace;
+    mDriver.markRow(std::string(view) + " " + r.mode + (r.metric != "-" ? "/" + r.metric : std::string()) +
+                        (mLooks.size() > 1 ? " " + r.look : std::string()),
+                    first, rowStartNs);
+    log::info(r.device + " " + r.backend + " " + r.view + " " + r.mode + " " + r.metric + ": " +
+              std::to_string(r.gpuMsMedian) + " ms, " + std::to_string(r.triangles) + " triangles" +
+              (mLooks.size() > 1 ? ", look " + r.look : std::string()));
+}
+
+Status TerrainBench::finish() const {
+    std::string table = terrainBenchTable(mRecords);
+    if (mDriver.comparing()) table += backendComparisonTable(mRecords, mNotes);
+    return mDriver.finish(mRecords.size(), terrainBenchJson(mRecords), table);
+}
 
 } // namespace
 
 Status runTerrainBenchmark(const Options& options) {
-    auto& profiler = profiler::Profiler::global();
-    profiler.setEnabled(true);
+    auto driver = BenchDriver::start(options, terrainPlan());
+    if (!driver) return driver.error();
     auto loaded = World::load(options, 1);
     if (!loaded) return loaded.error();
-    terrain::Terrain& ground = loaded.value()->terrain();
-    auto devices = deviceSelectors(options);
-    if (!devices) return devices.error();
-    const bool compare = options.backend == "all";
-    std::vector<std::string> backends;
-    if (compare) backends = {kComparisonReference, "r2vb", "streamout"};
-    else if (!options.backend.empty()) backends.push_back(options.backend);
-    else backends.assign(std::begin(kBackendPreference), std::end(kBackendPreference));
-    const uint32_t warmup = options.warmup ? options.warmup : 3;
-    const uint32_t frames = options.frames ? options.frames : 10;
-    auto level = [](float value) {
-        std::ostringstream text;
-        text << value;
-        return text.str();
-    };
-    if (compare && options.tessMaxGiven && options.tessellation.maxLevel > kComparisonMaxLevel)
-        return fail("--tess-max ", level(options.tessellation.maxLevel),
-                    ": --backend all compares the backends at the emulated tessellator's levels, 1 to ",
-                    level(kComparisonMaxLevel));
-    const std::filesystem::path traceDir = benchTraceDirectory(options);
-    if (!traceDir.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(traceDir, ec);
-        if (ec) return fail("--out-dir ", traceDir.string(), ": ", ec.message());
-    }
-
-    // --look both: each row twice, plain then full, on the same session.
-    std::vector<backend::Look> looks = {options.look};
-    if (options.benchBothLooks) looks = {backend::Look::Plain, backend::Look::Full};
-    std::vector<TerrainBenchRecord> records;
-    std::vector<std::string> notes;
-    if (compare && options.tessellation.continuousLevel > kComparisonMaxLevel)
-        notes.push_back("continuous level " + level(options.tessellation.continuousLevel) + " runs as " +
-                        level(kComparisonMaxLevel) + " on every backend, the emulated tessellator's maximum");
-    uint32_t frameIndex = 0;
-    for (const auto& device : devices.value()) {
-        for (const auto& backendName : backends) {
-            Options run = options;
-            run.device = device;
-            run.backend = backendName;
-            profiler.clear();
-            auto created = RenderSession::create(run, ground);
-            if (!created) {
-                log::warning("skipping " + backendName + " on device " + device + ": " + created.error().message);
-                notes.push_back(backendName + " skipped on device " + device + ": " + created.error().message);
-                continue;
-            }
-            RenderSession& session = *created.value();
-            const auto& caps = session.capabilities();
-            if (compare) {
-                // One cap for every backend, so all draw the same triangles.
-                if (!options.tessMaxGiven) run.tessellation.maxLevel = kComparisonMaxLevel;
-                run.tessellation.continuousLevel = std::min(run.tessellation.continuousLevel, kComparisonMaxLevel);
-            }
-            run.tessellation.continuousLevel = std::min(run.tessellation.continuousLevel, caps.maxTessFactor);
-            run.tessMaxGiven = false; // levels above the backend's maximum clamp to it
-            std::vector<std::string> missing;
-            for (auto mode : {terrain::TerrainMode::Continuous, terrain::TerrainMode::Adaptive})
-                if (!caps.drawsTerrainMode(mode)) missing.push_back(terrain::toString(mode));
-            if (!missing.empty()) {
-                std::string modes;
-                for (const auto& m : missing) modes += (modes.empty() ? "" : ", ") + m;
-                notes.push_back(caps.name + " on " + session.deviceName() + " does not draw " + modes);
-            }
-            const std::string tracePath =
-                traceDir.empty()
-                    ? std::string()
-                    : (traceDir / ("bench-" + caps.name +
-                                   (devices.value().size() > 1 ? "-device" + device : std::string()) + ".json"))
-                          .string();
-            const size_t firstRecord = records.size();
-            for (const BenchView& view : benchViews(ground)) {
-                scene::Camera camera;
-                camera.setPose(view.pose);
-                camera.setAspect(float(session.width()) / float(session.height()));
-                for (const Options& row : benchRuns(run, caps)) {
-                    auto settings = session.resolveTessellation(row);
-                    if (!settings) return settings.error();
-                    for (const backend::Look look : looks) {
-                        session.setLook(look);
-                        const uint32_t first = frameIndex;
-                        const uint64_t rowStartNs = profiler.nowNs();
-                        for (uint32_t f = 0; f < warmup + frames; ++f, ++frameIndex) {
-                            profiler.beginFrame(frameIndex);
-                            session.renderFrame(frameIndex, camera, settings.value(), options.clearColor, false, false);
-                            profiler.endFrame();
-                            profiler.recordCounter({"intermediate bytes", frameIndex, profiler.nowNs(),
-                                                    double(session.lastFrameReport().intermediateBytes)});
-                        }
-                        session.finish();
-                        records.push_back(makeRecord(session, view.name, settings.value(),
-                                                     summarizeFrames(profiler, first + warmup, frameIndex)));
-                        TerrainBenchRecord& r = records.back();
-                        r.look = look == backend::Look::Plain ? "plain" : "full";
-                        r.trace = tracePath;
-                        // One slice per row on the CPU track, so the trace reads
-                        // as the table's rows.
-                        const std::string label = std::string(view.name) + " " + r.mode +
-                                                  (r.metric != "-" ? "/" + r.metric : std::string()) +
-                                                  (looks.size() > 1 ? " " + r.look : std::string());
-                        profiler.recordCpu({internBenchName(label), profiler::Profiler::currentThreadId(), first, rowStartNs,
-                                            profiler.nowNs() - rowStartNs, 0});
-                        log::info(r.device + " " + r.backend + " " + r.view + " " + r.mode + " " + r.metric + ": " +
-                                  std::to_string(r.gpuMsMedian) + " ms, " + std::to_string(r.triangles) + " triangles" +
-                                  (looks.size() > 1 ? ", look " + r.look : std::string()));
-                    }
-                }
-            }
-            if (!tracePath.empty() && records.size() > firstRecord) {
-                if (auto w = writeBenchTrace(profiler, tracePath, "tessera bench terrain", session); !w) return w;
-            }
-        }
-    }
-    profiler.clear();
-    if (records.empty()) return fail("--bench terrain: no backend could run on any device");
-    const std::string json = terrainBenchJson(records);
-    std::string table = terrainBenchTable(records);
-    if (compare) table += backendComparisonTable(records, notes);
-    return writeBenchOutputs(options, json, table);
+    const TessellationOptions& levels = options.tessellation;
+    const bool compare = driver.value().comparing();
+    if (compare && levels.maxLevel && *levels.maxLevel > kComparisonMaxLevel)
+        return failSetting(setting::kTessMax, " ", level(*levels.maxLevel), ": ",
+                           reporterFor(options).name(setting::kBackend),
+                           " all compares the backends at the emulated tessellator's levels, 1 to ",
+                           level(kComparisonMaxLevel));
+    TerrainBench bench(driver.value(), loaded.value()->terrain());
+    const float continuous = levels.continuousLevel.value_or(terrain::TessellationSettings{}.continuousLevel);
+    if (compare && continuous > kComparisonMaxLevel)
+        bench.note("continuous level " + level(continuous) + " runs as " + level(kComparisonMaxLevel) +
+                   " on every backend, the emulated tessellator's maximum");
+    for (const auto& device : driver.value().devices())
+        for (const auto& backend : driver.value().backends())
+            if (Status ok = bench.runBackend(device, backend); !ok) return ok;
+    return bench.finish();
 }
 
 } // namespace tessera::runtime

@@ -1,6 +1,8 @@
 #include "WindowController.h"
 
+#include "tessera/runtime/Reporter.h"
 #include "tessera/runtime/SceneRun.h"
+#include "tessera/runtime/Settings.h"
 #include "tessera/core/ImageFile.h"
 #include "tessera/core/Log.h"
 #include "tessera/profiler/Profiler.h"
@@ -108,22 +110,24 @@ void WindowController::updateCamera(uint32_t frame, float seconds) {
         // Where a move ended, in --camera's form, so a view found by hand can
         // be replayed headless.
         mMoved = false;
-        log::info("camera at --camera " + scene::formatCameraPose(mCamera.pose()));
+        log::info("camera at " + reporterFor(mOptions).name(setting::kCamera) + " " +
+                  scene::formatCameraPose(mCamera.pose()));
     }
 }
 
 void WindowController::apply(const OverlayActions& actions) {
     if (!actions.switchBackend.empty()) {
         Status ok = mRun.switchBackend(actions.switchBackend);
-        mState.status = ok ? "backend " + actions.switchBackend : ok.error().message;
-        if (!ok) log::warning(mState.status);
+        mState.status = ok ? "backend " + actions.switchBackend : reporterFor(mOptions).wording(ok.error());
+        if (!ok) reporterFor(mOptions).warning(ok.error());
     }
     if (actions.agents) {
         Options options = mRun.options();
         options.agents = {*actions.agents};
         Status ok = mRun.reloadWorld(options);
-        mState.status = ok ? "crowd of " + std::to_string(*actions.agents) + " agents" : ok.error().message;
-        if (!ok) log::warning(mState.status);
+        mState.status =
+            ok ? "crowd of " + std::to_string(*actions.agents) + " agents" : reporterFor(mOptions).wording(ok.error());
+        if (!ok) reporterFor(mOptions).warning(ok.error());
     }
     if (actions.dropMeteor) {
         const scene::Camera& camera = mRun.camera();
@@ -135,7 +139,7 @@ void WindowController::apply(const OverlayActions& actions) {
     }
     if (actions.capture) {
         Status ok = mRun.session().requestCapture();
-        mState.status = ok ? "capturing the next frame in RenderDoc" : ok.error().message;
+        mState.status = ok ? "capturing the next frame in RenderDoc" : reporterFor(mOptions).wording(ok.error());
     }
     if (actions.screenshot) mScreenshotPending = true;
 }
@@ -169,7 +173,7 @@ void WindowController::afterFrame(uint32_t frame) {
     std::snprintf(name, sizeof name, "tessera-screenshot-%05u.png", frame);
     RenderSession& session = mRun.session();
     Status ok = writePng(name, {session.width(), session.height(), session.finish()});
-    mState.status = ok ? std::string("wrote ") + name : ok.error().message;
+    mState.status = ok ? std::string("wrote ") + name : reporterFor(mOptions).wording(ok.error());
     log::info(mState.status);
 }
 

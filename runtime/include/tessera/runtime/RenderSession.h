@@ -26,6 +26,8 @@
 
 namespace tessera::runtime {
 
+class Reporter;
+
 class RenderSession {
 public:
     /// Selects the backend and device from `options`, opens the target (and
@@ -165,6 +167,7 @@ private:
     };
 
     terrain::Terrain* mTerrain = nullptr;
+    const Reporter* mReporter = nullptr; ///< the options' (reporterFor)
     std::unique_ptr<SelectedBackend> mSelected;
     std::unique_ptr<gpu::Swapchain> mSwapchain;
     std::unique_ptr<gpu::RenderTarget> mTarget;
