@@ -198,8 +198,8 @@ struct Options {
     std::string benchOutDir;
 };
 
-/// A number as a user writes it on the command line ("14.99", "20"), for
-/// messages about flags.
+/// A number as a user writes it ("14.99", "20"), for messages about
+/// settings.
 std::string formatNumber(double value);
 
 } // namespace tessera::runtime
