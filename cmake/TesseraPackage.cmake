@@ -2,14 +2,21 @@
 #   find_package(Tessera REQUIRED)
 #   target_link_libraries(game PRIVATE Tessera::runtime)
 # Tessera::runtime (backend and device selection, the frame loop, the world,
-# captures, benchmarks) brings Tessera::gpu, Tessera::assets, Tessera::subdiv
-# and Tessera::core; a game that writes its own host links those alone.
-# Tessera::assets (glTF/Draco) and Tessera::subdiv (OpenSubdiv) link their
-# dependencies privately. examples/embed is such a game; docs/EMBEDDING.md
-# and the README's "Using Tessera in your game" describe it.
+# captures, benchmarks) brings Tessera::subdiv and Tessera::core; its headers
+# need no Vulkan headers (the GPU layer, Tessera::gpu, and the asset loaders,
+# Tessera::assets, are its private dependencies). A game that writes its own
+# host links Tessera::gpu and the others alone. Tessera::assets (glTF/Draco)
+# and Tessera::subdiv (OpenSubdiv) link their dependencies privately.
+# For a game's command line: Tessera::cli, the parser every Tessera program
+# uses (CLI11), and Tessera::demo_cli, tessera-demo's own flags into
+# runtime::Options (tessera/demo/CommandLine.h) with its names for the
+# runtime's settings (tessera/demo/SettingFlags.h). examples/embed is such a
+# game; docs/EMBEDDING.md and the README's "Using Tessera in your game"
+# describe it.
 include(CMakePackageConfigHelpers)
 
-install(TARGETS tessera_core tessera_gpu tessera_assets tessera_subdiv tessera_runtime EXPORT TesseraTargets
+install(TARGETS tessera_core tessera_gpu tessera_assets tessera_subdiv tessera_runtime tessera_cli tessera_demo_cli
+    EXPORT TesseraTargets
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
@@ -18,7 +25,11 @@ install(TARGETS tessera_core tessera_gpu tessera_assets tessera_subdiv tessera_r
 foreach(library core subdiv assets gpu)
     install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/${library}/include/tessera DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/include/tessera DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/include/tessera ${PROJECT_SOURCE_DIR}/tools/cli/include/tessera
+    DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# tessera-demo's flags: game_sample's headers (all of them tessera_demo_cli's).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/game_sample/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tessera/demo
+    FILES_MATCHING PATTERN "*.h")
 # Shared GLSL for games that write their own passes (compile with
 # -I<prefix>/share/tessera/glsl -I<prefix>/include).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/shaders/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tessera/glsl FILES_MATCHING PATTERN "*.glsl")

@@ -111,14 +111,6 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
         if (!mask) return fail("--hide-features: ", mask.error().message);
         o.hiddenFeatures = mask.value();
     }
-    o.sceneGiven = given("--scene");
-    o.sizeGiven = given("--width") || given("--height");
-    o.warmupGiven = given("--warmup");
-    o.meteorsGiven = given("--meteors");
-    o.tessMaxGiven = given("--tess-max");
-    o.tessLevelGiven = given("--tess-level");
-    o.tessTargetGiven = given("--tess-target");
-    o.tessMetricGiven = given("--tess-metric");
     return {};
 }
 
@@ -145,6 +137,7 @@ Result<Options> parseCommandLine(const std::vector<std::string>& args) {
     }
     if (Status ok = interpret(line, t, o); !ok) return ok.error();
     const bool crowdDrawGiven = line.app().count("--crowd-draw") > 0;
+    const bool sceneGiven = line.app().count("--scene") > 0, meteorsGiven = line.app().count("--meteors") > 0;
     if (o.backend == "all" && o.bench.empty())
         return fail("--backend all compares the backends in --bench terrain, characters or crowd; pick one backend "
                     "for the demo");
@@ -153,13 +146,13 @@ Result<Options> parseCommandLine(const std::vector<std::string>& args) {
     if (lodFar > lodNear)
         return fail("--lod-far ", cli::formatNumber(lodFar), " is above --lod-near ", cli::formatNumber(lodNear),
                     ": the far threshold must be the smaller");
-    if ((!o.models.empty() || !o.surfaces.empty()) && !o.sceneGiven) o.scene = "characters";
+    if ((!o.models.empty() || !o.surfaces.empty()) && !sceneGiven) o.scene = "characters";
     const bool crowdFlags = !o.agents.empty() || crowdDrawGiven;
-    if (crowdFlags && !o.sceneGiven && o.bench.empty()) o.scene = "crowd";
+    if (crowdFlags && !sceneGiven && o.bench.empty()) o.scene = "crowd";
     // With no scene asked for, the showcase: the crowd on the adaptive
     // terrain under a meteor shower, seen from a flight over it.
-    if (!o.sceneGiven && o.models.empty() && o.surfaces.empty() && o.bench.empty()) o.scene = "crowd";
-    if (o.scene == "crowd" && o.bench.empty() && !o.meteorsGiven) o.meteors = kCrowdSceneMeteors;
+    if (!sceneGiven && o.models.empty() && o.surfaces.empty() && o.bench.empty()) o.scene = "crowd";
+    if (o.scene == "crowd" && o.bench.empty() && !meteorsGiven) o.meteors = kCrowdSceneMeteors;
     const bool crowdBench = o.bench == "crowd" || o.bench == "crowd-sim";
     if (crowdFlags && o.scene != "crowd" && !crowdBench)
         return fail(!o.agents.empty() ? "--agents" : "--crowd-draw",
@@ -180,7 +173,6 @@ Result<Options> parseCommandLine(const std::vector<std::string>& args) {
         return fail("--bench terrain measures the terrain; drop --scene ", o.scene);
     if (o.benchBothLooks && o.bench != "terrain")
         return fail("--look both measures the two looks side by side in --bench terrain; give plain or full here");
-    if (!o.tessTargetGiven) o.tessellation.targetPixels = terrain::defaultTargetPixels(o.tessellation.metric);
     if (o.window && !o.record.empty()) return fail("--record writes headless frames; drop --window");
     if (o.window && !o.screenshot.empty() && o.frames == 0)
         return fail("--screenshot with --window needs --frames N to know which frame to capture");

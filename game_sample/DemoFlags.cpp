@@ -24,7 +24,7 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
     auto count = [&](const char* name, auto& into, uint64_t lo, uint64_t hi, const char* type, const char* desc) {
         app.add_option(name, into, desc)->type_name(type)->allow_extra_args(false)->check(cli::count(lo, hi));
     };
-    auto number = [&](const char* name, float& into, double lo, double hi, const char* type, const char* desc) {
+    auto number = [&](const char* name, auto& into, double lo, double hi, const char* type, const char* desc) {
         app.add_option(name, into, desc)->type_name(type)->allow_extra_args(false)->check(cli::number(lo, hi));
     };
     auto choice = [&](const char* name, std::string& into, std::vector<std::string> choices, const char* type,

@@ -2,23 +2,31 @@
 // installed package alone. It picks a backend by name, draws the terrain
 // with a crowd of tessellated creatures from a camera it places itself, and
 // asks the same terrain the GPU draws gameplay questions: the ground height
-// under a point, and what a crater does to it.
+// under a point, and what a crater does to it. It takes its options with
+// the package's command-line library (Tessera::cli, the parser of every
+// Tessera program) and names the runtime's settings by its own flags in the
+// runtime's messages (runtime::Reporter).
 //
 //   tessera-embed [--backend NAME] [--window] [--validation] [--frames N]
 //                 [--agents N] [--screenshot FILE]
 
+#include "tessera/cli/CommandLine.h"
+#include "tessera/cli/Validators.h"
 #include "tessera/core/ImageFile.h"
+#include "tessera/crowd/Crowd.h"
 #include "tessera/runtime/BackendSelection.h"
 #include "tessera/runtime/Options.h"
+#include "tessera/runtime/Reporter.h"
 #include "tessera/runtime/SceneRun.h"
+#include "tessera/runtime/Settings.h"
 #include "tessera/runtime/SimulatedCrowd.h"
 
 #include <glm/glm.hpp>
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -32,34 +40,48 @@ struct GameFlags {
     std::string screenshot;
 };
 
-bool parseCount(const std::string& text, uint32_t& out) {
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
-    return ec == std::errc() && end == text.data() + text.size() && out > 0;
-}
-
-/// The game's own command line; returns false after printing what is wrong.
-bool parseFlags(int argc, char** argv, GameFlags& flags) {
-    for (int i = 1; i < argc; ++i) {
-        const std::string flag = argv[i];
-        auto value = [&](std::string& out) {
-            if (i + 1 >= argc) return false;
-            out = argv[++i];
-            return true;
-        };
-        std::string text;
-        if (flag == "--window") flags.window = true;
-        else if (flag == "--validation") flags.validation = true;
-        else if (flag == "--backend" && value(flags.backend)) continue;
-        else if (flag == "--screenshot" && value(flags.screenshot)) continue;
-        else if (flag == "--frames" && value(text) && parseCount(text, flags.frames)) continue;
-        else if (flag == "--agents" && value(text) && parseCount(text, flags.agents)) continue;
-        else {
-            std::fprintf(stderr, "tessera-embed: bad or incomplete flag %s\n", flag.c_str());
-            return false;
-        }
+/// The game's own command line; false after printing what is wrong (or the
+/// help), with the exit code in `code`.
+bool parseFlags(int argc, char** argv, GameFlags& flags, int& code) {
+    tessera::cli::CommandLine line("tessera-embed", "A minimal game on Tessera's runtime: a crowd on the terrain, "
+                                                    "a crater halfway through, headless unless --window.");
+    CLI::App& app = line.app();
+    app.add_option("--backend", flags.backend, "the backend (default: the best the device runs)")->type_name("NAME");
+    app.add_flag("--window", flags.window, "open a window instead of rendering headless");
+    app.add_flag("--validation", flags.validation, "enable the Khronos validation layer; fail on any message");
+    app.add_option("--frames", flags.frames, "frames to draw (default 30)")
+        ->type_name("N")
+        ->check(tessera::cli::count(1, 100000));
+    app.add_option("--agents", flags.agents, "agents in the crowd (default 300)")
+        ->type_name("N")
+        ->check(tessera::cli::count(1, tessera::crowd::Crowd::kMaxAgents));
+    app.add_option("--screenshot", flags.screenshot, "write the last frame as PNG")->type_name("FILE");
+    auto parsed = line.parse(argc, argv);
+    if (!parsed) {
+        std::fprintf(stderr, "tessera-embed: %s\n", parsed.error().message.c_str());
+        code = 2;
+        return false;
+    }
+    if (!parsed.value()) {
+        std::fputs(line.help().c_str(), stdout);
+        code = 0;
+        return false;
     }
     return true;
 }
+
+/// The runtime words its messages itself; the game puts its own flags in
+/// place of the settings it takes (the runtime's words for the rest).
+class GameNames final : public tessera::runtime::Reporter {
+public:
+    std::string name(std::string_view words) const override {
+        namespace setting = tessera::runtime::setting;
+        if (words == setting::kBackend) return "--backend";
+        if (words == setting::kAgents) return "--agents";
+        if (words == setting::kScreenshot) return "--screenshot";
+        return std::string(words);
+    }
+};
 
 /// A camera at `eye` looking at `target`, in Tessera's conventions (yaw 0
 /// looks toward -Z and turns toward -X; pitch up is positive).
@@ -73,9 +95,11 @@ tessera::scene::CameraPose lookAt(const glm::vec3& eye, const glm::vec3& target)
 int main(int argc, char** argv) {
     using namespace tessera;
     GameFlags flags;
-    if (!parseFlags(argc, argv, flags)) return 2;
+    if (int code = 0; !parseFlags(argc, argv, flags, code)) return code;
 
+    const GameNames names;
     runtime::Options options; // every field has a working default
+    options.reporter = &names;
     options.backend = flags.backend;
     options.window = flags.window;
     options.validation = flags.validation;
@@ -85,7 +109,7 @@ int main(int argc, char** argv) {
     options.agents = {flags.agents};
     auto created = runtime::SceneRun::create(options, flags.frames);
     if (!created) {
-        std::fprintf(stderr, "tessera-embed: %s\n", created.error().message.c_str());
+        std::fprintf(stderr, "tessera-embed: %s\n", names.wording(created.error()).c_str());
         return 1;
     }
     runtime::SceneRun& run = *created.value();
@@ -115,7 +139,7 @@ int main(int argc, char** argv) {
     const std::vector<uint8_t> pixels = run.session().finish();
     if (!flags.screenshot.empty()) {
         if (Status ok = writePng(flags.screenshot, {run.session().width(), run.session().height(), pixels}); !ok) {
-            std::fprintf(stderr, "tessera-embed: %s\n", ok.error().message.c_str());
+            std::fprintf(stderr, "tessera-embed: %s\n", names.wording(ok.error()).c_str());
             return 1;
         }
     }

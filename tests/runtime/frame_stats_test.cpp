@@ -1,6 +1,6 @@
 // The overlay's frame statistics: the newest resolved GPU frame wins, its
 // passes keep their order, pipeline statistics add up, history is bounded.
-#include "FrameStats.h"
+#include "window/FrameStats.h"
 
 #include <gtest/gtest.h>
 

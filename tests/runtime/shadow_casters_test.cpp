@@ -1,6 +1,6 @@
 // The characters' shadow region and casters: the square lies ahead of the
 // camera with the camera inside it, and the nearest casters are kept.
-#include "ShadowCasters.h"
+#include "world/ShadowCasters.h"
 
 #include <gtest/gtest.h>
 

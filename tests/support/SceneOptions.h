@@ -19,13 +19,11 @@ inline runtime::Options smallSceneOptions(const std::string& backend, const std:
     options.contentDir = TESSERA_CONTENT_DIR;
     options.validation = backend != "null";
     options.scene = scene;
-    options.sceneGiven = true;
     options.width = 96;
     options.height = 64;
     if (scene == "crowd") {
         options.agents = {64};
         options.meteors = 1;
-        options.meteorsGiven = true;
     }
     return options;
 }

@@ -4,7 +4,9 @@
 /// (terrain, characters, crowd, subdivision surfaces), level of detail,
 /// outputs and benchmarks. Plain data with working defaults: a game fills in
 /// what it needs; tessera-demo fills it from its command line (each field
-/// names its flag, documented in `tessera-demo --help`).
+/// names its flag, documented in `tessera-demo --help`). A value whose
+/// default depends on the mode (the benchmarks', the backend's) is a
+/// std::optional: unset, the mode decides; set, it is the caller's choice.
 
 #include "tessera/backend/CharacterDesc.h"
 #include "tessera/device/FeatureMask.h"
@@ -23,6 +25,8 @@
 
 namespace tessera::runtime {
 
+class Reporter;
+
 /// How --model .obj files (Catmull-Clark surfaces with analytic
 /// displacement, docs/SUBDIV.md) are drawn.
 struct SubdivOptions {
@@ -38,10 +42,40 @@ struct SubdivOptions {
     int sculpt = 0;                     ///< --sculpt raise|lower: +1 / -1, a scripted stroke, one dab a frame
 };
 
+/// The terrain's tessellation as the caller asks for it (the first paper's
+/// Table 2 modes; the mode itself is Options::terrainMode). What is left
+/// unset takes the metric's or the backend's default; a level set above
+/// what the backend draws is an error, a default one is clamped to it (as
+/// D3D10-era hardware clamps to 14.99).
+struct TessellationOptions {
+    /// --tess-metric: the adaptive mode's metric; unset: screen (--bench
+    /// terrain: every metric).
+    std::optional<terrain::TessMetric> metric;
+    /// --tess-target: pixels per edge (screen, silhouette) or of error
+    /// (detail); unset: the metric's default (terrain::defaultTargetPixels).
+    std::optional<float> targetPixels;
+    /// --tess-distance: the distance metric's metres where the level reaches 1.
+    float farDistance = terrain::TessellationSettings{}.farDistance;
+    /// --tess-level: the continuous mode's level; unset: 15.
+    std::optional<float> continuousLevel;
+    /// --tess-max: the adaptive mode's largest level; unset: the backend's maximum.
+    std::optional<float> maxLevel;
+
+    /// The settings asked for, before a backend checks and clamps them (its
+    /// mode still the default).
+    terrain::TessellationSettings settings() const;
+};
+
 /// Meteor impacts over a crowd-scene run when --meteors is not given.
 inline constexpr uint32_t kCrowdSceneMeteors = 4;
+/// The frame size when the options give none.
+inline constexpr uint32_t kDefaultWidth = 1280, kDefaultHeight = 720;
 
 struct Options {
+    /// Where the run's errors and warnings go, naming settings the host's way
+    /// (Reporter.h); null: the log, in the runtime's words. Not owned: it
+    /// must outlive every object made from these options.
+    const Reporter* reporter = nullptr;
     std::string backend;                ///< empty: best backend the device runs; "all" (--bench only): every GPU backend
     std::string device;                 ///< --device NAME|INDEX
     std::vector<std::string> pluginDirs; ///< --plugin-dir (repeatable)
@@ -74,12 +108,13 @@ struct Options {
     backend::TerrainShading terrainShading = backend::TerrainShading::Auto;
     glm::vec3 sunDirection{0.4f, 0.8f, 0.3f}; ///< --sun: towards the sun (normalised by the backend)
     bool benchBothLooks = false;        ///< --look both: --bench terrain measures every row in both looks
-    uint32_t width = 1280;
-    uint32_t height = 720;
-    bool sizeGiven = false;             ///< --width or --height was given (--bench crowd defaults to 1920x1080)
+    /// --width, --height; unset: kDefaultWidth x kDefaultHeight (--bench
+    /// crowd: 1920x1080 unless either is given).
+    std::optional<uint32_t> width, height;
     uint32_t frames = 0;                ///< 0: the mode's default
-    uint32_t warmup = 0;
-    bool warmupGiven = false;           ///< --warmup was given (--bench crowd-sim takes 0 as none)
+    /// --warmup: frames run first and left out of measurements; unset: none,
+    /// or the benchmark's default (BenchPlan::warmup).
+    std::optional<uint32_t> warmup;
     uint32_t seed = 1;
     glm::vec3 clearColor{0.55f, 0.68f, 0.85f};
     std::optional<scene::CameraPose> camera; ///< --camera fixes the view
@@ -99,15 +134,9 @@ struct Options {
 
     /// --terrain-mode; unset: adaptive where the backend draws it, else lowres.
     std::optional<terrain::TerrainMode> terrainMode;
-    /// --tess-metric, --tess-target, --tess-level, --tess-max, --tess-distance
-    /// (mode is filled in once the backend is known).
-    terrain::TessellationSettings tessellation;
-    bool tessMaxGiven = false;
-    bool tessLevelGiven = false;
-    bool tessTargetGiven = false;
-    bool tessMetricGiven = false;
-    uint32_t meteors = 0;                         ///< --meteors N (the crowd scene: kCrowdSceneMeteors unless given)
-    bool meteorsGiven = false;
+    /// --tess-metric, --tess-target, --tess-level, --tess-max, --tess-distance.
+    TessellationOptions tessellation;
+    uint32_t meteors = 0;                         ///< --meteors N (tessera-demo's crowd scene: kCrowdSceneMeteors unless given)
     std::vector<terrain::CraterSplat> splats;     ///< --splat x,z,radius[,depth], before the first frame
 
     /// --scene terrain|characters|crowd. "terrain" is the flythrough over
@@ -119,7 +148,6 @@ struct Options {
     /// crowd where the backend culls and bins crowds on the GPU, from a
     /// flight over them (an orbit with --orbit-distance).
     std::string scene = "terrain";
-    bool sceneGiven = false;
     std::vector<std::string> models;    ///< --model FILE (repeatable): any .gltf or .glb
     std::vector<std::string> surfaces;  ///< --model FILE.obj (repeatable): Catmull-Clark control meshes
     SubdivOptions subdiv;
@@ -170,8 +198,8 @@ struct Options {
     std::string benchOutDir;
 };
 
-/// A number as a user writes it on the command line ("14.99", "20"), for
-/// messages about flags.
+/// A number as a user writes it ("14.99", "20"), for messages about
+/// settings.
 std::string formatNumber(double value);
 
 } // namespace tessera::runtime

@@ -26,6 +26,8 @@
 
 namespace tessera::runtime {
 
+class Reporter;
+
 class SimulatedCrowd final : public CharacterPopulation {
 public:
     static constexpr uint32_t kDefaultAgents = 2000;
@@ -47,8 +49,9 @@ public:
     /// What the run did, in one line: steps, agents walking, fleeing and
     /// stuck, arrivals, mean step time.
     std::string summary() const;
-    /// How the crowd is drawn on `backend` (`gpu`: one that needs a GPU), in one line.
-    std::string drawingMode(const std::string& backend, bool gpu) const;
+    /// How the crowd is drawn on `backend` (`gpu`: one that needs a GPU), in
+    /// one line naming settings as `reporter` does.
+    std::string drawingMode(const std::string& backend, bool gpu, const Reporter& reporter) const;
 
     CharacterAssets& assets() override { return mAssets; }
     /// Instanced (useInstancedCrowd): every agent an instance, tiers by the

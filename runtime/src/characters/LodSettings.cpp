@@ -1,0 +1,28 @@
+#include "characters/LodSettings.h"
+
+namespace tessera::runtime {
+
+lod::LodPolicy measureEveryCharacter() {
+    lod::LodPolicy policy;
+    policy.nearPixels = policy.farPixels = 0.5f;
+    policy.fadeFrames = 0;
+    policy.budget.maxNearInstances = lod::LodBudget::kUnlimited;
+    policy.budget.maxTessellatedTriangles = UINT64_MAX;
+    return policy;
+}
+
+Result<lod::LodPolicy> lodPolicyFor(const Options& options, lod::DeviceClass device) {
+    lod::LodPolicy policy = options.characterLevel ? measureEveryCharacter() : lod::LodPolicy::forDevice(device);
+    if (options.lodNear) policy.nearPixels = *options.lodNear;
+    if (options.lodFar) policy.farPixels = *options.lodFar;
+    if (options.lodBudget) policy.budget.maxTessellatedTriangles = *options.lodBudget;
+    if (options.lodNearMax) policy.budget.maxNearInstances = *options.lodNearMax;
+    if (options.lodMiddleMax) policy.budget.maxMiddleInstances = *options.lodMiddleMax;
+    if (options.lodEdge) policy.targetEdgePixels = *options.lodEdge;
+    if (options.lodFade) policy.fadeFrames = *options.lodFade;
+    if (options.lodFarTriangles) policy.farMeshTriangles = *options.lodFarTriangles;
+    if (Status ok = policy.validate(); !ok) return ok.error();
+    return policy;
+}
+
+} // namespace tessera::runtime
