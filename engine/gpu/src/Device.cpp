@@ -178,7 +178,7 @@ uint32_t Device::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags require
     return UINT32_MAX;
 }
 
-VkDeviceMemory Device::allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags flags, const std::string& name) {
+DeviceMemory Device::allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags flags, const std::string& name) {
     uint32_t type = findMemoryType(req.memoryTypeBits, flags);
     // Cached readback memory is a preference, not a requirement.
     if (type == UINT32_MAX && (flags & VK_MEMORY_PROPERTY_HOST_CACHED_BIT))
@@ -203,19 +203,23 @@ VkDeviceMemory Device::allocate(const VkMemoryRequirements& req, VkMemoryPropert
     if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
         throw outOfMemory(std::string(" (") + resultName(result) + ")");
     TESSERA_VK_CHECK(result);
-    setName(VK_OBJECT_TYPE_DEVICE_MEMORY, memory, name + ".memory");
+    DeviceMemory owned(*this, memory, name + ".memory");
+    mAllocationSizes.emplace(memory, req.size);
     const uint64_t now = (mAllocatedBytes += req.size);
     uint64_t peak = mPeakBytes.load();
     while (now > peak && !mPeakBytes.compare_exchange_weak(peak, now)) {
     }
-    return memory;
+    return owned;
 }
 
-void Device::free(VkDeviceMemory memory, VkDeviceSize size) {
+void Device::free(VkDeviceMemory memory) {
     if (!memory) return;
+    const auto size = mAllocationSizes.find(memory);
     clearName(VK_OBJECT_TYPE_DEVICE_MEMORY, memory);
     vkFreeMemory(mDevice, memory, nullptr);
-    mAllocatedBytes -= size;
+    if (size == mAllocationSizes.end()) return;
+    mAllocatedBytes -= size->second;
+    mAllocationSizes.erase(size);
 }
 
 void Device::submitImmediate(const std::function<void(VkCommandBuffer)>& record, const char* label) {

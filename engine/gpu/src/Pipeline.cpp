@@ -6,11 +6,10 @@
 #include "tessera/gpu/VulkanCheck.h"
 
 #include <cassert>
-#include <utility>
 
 namespace tessera::gpu {
 
-Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) : mDevice(&device) {
+Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) {
     assert(desc.layout);
     // Modules are only needed while the pipeline is compiled.
     std::vector<ShaderModule> modules;
@@ -95,29 +94,9 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) : mDevice(&
     info.pColorBlendState = &blend;
     info.pDynamicState = &dynamic;
     info.layout = desc.layout->handle();
-    TESSERA_VK_CHECK(vkCreateGraphicsPipelines(device.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &mPipeline));
-    device.setName(VK_OBJECT_TYPE_PIPELINE, mPipeline, desc.name);
-}
-
-Pipeline::~Pipeline() {
-    if (mDevice) {
-        mDevice->clearName(VK_OBJECT_TYPE_PIPELINE, mPipeline);
-        vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
-    }
-}
-
-Pipeline::Pipeline(Pipeline&& other) noexcept { *this = std::move(other); }
-
-Pipeline& Pipeline::operator=(Pipeline&& other) noexcept {
-    if (this != &other) {
-        if (mDevice) {
-            mDevice->clearName(VK_OBJECT_TYPE_PIPELINE, mPipeline);
-            vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
-        }
-        mDevice = std::exchange(other.mDevice, nullptr);
-        mPipeline = std::exchange(other.mPipeline, VK_NULL_HANDLE);
-    }
-    return *this;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    TESSERA_VK_CHECK(vkCreateGraphicsPipelines(device.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    mPipeline = {device, pipeline, desc.name};
 }
 
 } // namespace tessera::gpu
