@@ -29,6 +29,30 @@ Fn load(VkDevice device, const char* name) {
     return reinterpret_cast<Fn>(vkGetDeviceProcAddr(device, name));
 }
 
+/// The extension entry points Tessera calls, loaded once for `device`.
+DeviceFunctions loadFunctions(VkInstance instance, VkDevice device, bool transformFeedback) {
+    DeviceFunctions fn;
+    fn.cmdPushDescriptorSet = load<PFN_vkCmdPushDescriptorSetKHR>(device, "vkCmdPushDescriptorSetKHR");
+    // Debug-utils entry points come from the instance extension; the loader
+    // hands out device-level trampolines for them.
+    fn.setObjectName = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+        vkGetInstanceProcAddr(instance, "vkSetDebugUtilsObjectNameEXT"));
+    fn.cmdBeginLabel = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(instance, "vkCmdBeginDebugUtilsLabelEXT"));
+    fn.cmdEndLabel = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(instance, "vkCmdEndDebugUtilsLabelEXT"));
+    fn.cmdInsertLabel = reinterpret_cast<PFN_vkCmdInsertDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(instance, "vkCmdInsertDebugUtilsLabelEXT"));
+    if (transformFeedback) {
+        fn.cmdBindTransformFeedbackBuffers =
+            load<PFN_vkCmdBindTransformFeedbackBuffersEXT>(device, "vkCmdBindTransformFeedbackBuffersEXT");
+        fn.cmdBeginTransformFeedback = load<PFN_vkCmdBeginTransformFeedbackEXT>(device, "vkCmdBeginTransformFeedbackEXT");
+        fn.cmdEndTransformFeedback = load<PFN_vkCmdEndTransformFeedbackEXT>(device, "vkCmdEndTransformFeedbackEXT");
+        fn.cmdDrawIndirectByteCount = load<PFN_vkCmdDrawIndirectByteCountEXT>(device, "vkCmdDrawIndirectByteCountEXT");
+    }
+    return fn;
+}
+
 } // namespace
 
 Result<std::unique_ptr<Device>> Device::create(Instance& instance, const PhysicalDeviceInfo& physical) {
@@ -99,25 +123,8 @@ Result<std::unique_ptr<Device>> Device::create(Instance& instance, const Physica
         return fail(physical.features.deviceName, ": could not create the Vulkan device (", resultName(result), ")");
     vkGetDeviceQueue(device->mDevice, family, 0, &device->mQueue);
 
-    auto& fn = device->mFn;
+    device->mFn = loadFunctions(instance.handle(), device->mDevice, want.transformFeedback);
     VkDevice d = device->mDevice;
-    fn.cmdPushDescriptorSet = load<PFN_vkCmdPushDescriptorSetKHR>(d, "vkCmdPushDescriptorSetKHR");
-    // Debug-utils entry points come from the instance extension; the loader
-    // hands out device-level trampolines for them.
-    fn.setObjectName = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
-        vkGetInstanceProcAddr(instance.handle(), "vkSetDebugUtilsObjectNameEXT"));
-    fn.cmdBeginLabel = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
-        vkGetInstanceProcAddr(instance.handle(), "vkCmdBeginDebugUtilsLabelEXT"));
-    fn.cmdEndLabel = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
-        vkGetInstanceProcAddr(instance.handle(), "vkCmdEndDebugUtilsLabelEXT"));
-    fn.cmdInsertLabel = reinterpret_cast<PFN_vkCmdInsertDebugUtilsLabelEXT>(
-        vkGetInstanceProcAddr(instance.handle(), "vkCmdInsertDebugUtilsLabelEXT"));
-    if (want.transformFeedback) {
-        fn.cmdBindTransformFeedbackBuffers = load<PFN_vkCmdBindTransformFeedbackBuffersEXT>(d, "vkCmdBindTransformFeedbackBuffersEXT");
-        fn.cmdBeginTransformFeedback = load<PFN_vkCmdBeginTransformFeedbackEXT>(d, "vkCmdBeginTransformFeedbackEXT");
-        fn.cmdEndTransformFeedback = load<PFN_vkCmdEndTransformFeedbackEXT>(d, "vkCmdEndTransformFeedbackEXT");
-        fn.cmdDrawIndirectByteCount = load<PFN_vkCmdDrawIndirectByteCountEXT>(d, "vkCmdDrawIndirectByteCountEXT");
-    }
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;

@@ -8,6 +8,27 @@
 #include <cassert>
 
 namespace tessera::gpu {
+namespace {
+
+/// One blend state per colour target: writes everything, with straight
+/// alpha blending when the desc asks for it.
+std::vector<VkPipelineColorBlendAttachmentState> blendAttachments(const GraphicsPipelineDesc& desc) {
+    std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
+    for (auto& b : blends) {
+        b.colorWriteMask = 0xF;
+        if (!desc.alphaBlend) continue;
+        b.blendEnable = VK_TRUE;
+        b.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+        b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        b.colorBlendOp = VK_BLEND_OP_ADD;
+        b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        b.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
+    return blends;
+}
+
+} // namespace
 
 Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) {
     assert(desc.layout);
@@ -55,18 +76,7 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) {
     depth.depthWriteEnable = desc.depthWrite;
     depth.depthCompareOp = desc.depthCompare;
 
-    std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
-    for (auto& b : blends) {
-        b.colorWriteMask = 0xF;
-        if (!desc.alphaBlend) continue;
-        b.blendEnable = VK_TRUE;
-        b.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
-        b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-        b.colorBlendOp = VK_BLEND_OP_ADD;
-        b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-        b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-        b.alphaBlendOp = VK_BLEND_OP_ADD;
-    }
+    const std::vector<VkPipelineColorBlendAttachmentState> blends = blendAttachments(desc);
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     blend.attachmentCount = static_cast<uint32_t>(blends.size());
     blend.pAttachments = blends.data();
