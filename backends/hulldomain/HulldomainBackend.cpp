@@ -1,15 +1,18 @@
 // hulldomain: the D3D11-style backend. A compute pre-pass writes one
 // tessellation level per control-mesh edge; tessellation control (hull) and
 // evaluation (domain) shaders draw the patches with levels up to 64.
+#include "common/BackendPlugin.h"
 #include "common/BasicCharacterBackend.h"
+#include "common/CommandHelpers.h"
+#include "common/CrowdDescriptors.h"
+#include "common/FillWirePipelines.h"
+#include "common/TerrainBindings.h"
 #include "tessera/shaders/FrameUniforms.h"
-#include "common/GpuCrowdSet.h"
 #include "HulldomainCharacterPatchPass.h"
 #include "HulldomainCharacterSkinPass.h"
 #include "HulldomainCrowdPass.h"
 #include "HulldomainSubdivPass.h"
 #include "HulldomainTessFactorPass.h"
-#include "tessera/backend/PluginApi.h"
 
 #include "hulldomain_terrain_patch.tesc.spv.h"
 #include "hulldomain_terrain_patch.tese.spv.h"
@@ -20,8 +23,8 @@ namespace tessera::backends {
 namespace {
 
 class HulldomainBackend final : public BasicCharacterBackend {
-public:
-    backend::BackendCapabilities capabilities(const device::DeviceFeatures* device) override {
+protected:
+    backend::BackendCapabilities describeCapabilities() const override {
         backend::BackendCapabilities caps;
         caps.name = "hulldomain";
         caps.description = "D3D11-style: compute factor pre-pass, tessellation control/evaluation shaders";
@@ -31,11 +34,9 @@ public:
         caps.terrainModes = 0b111;
         caps.crowd = true;
         caps.subdiv = true;
-        checkRequirements(device, caps);
         return caps;
     }
 
-protected:
     // D3D11-class: the full look's terrain shading runs in compute, on every
     // core, after the main pass (tile-based deferred shading's place).
     TerrainResolvePass::Mode terrainResolveMode() const override { return TerrainResolvePass::Mode::Compute; }
@@ -45,26 +46,17 @@ protected:
         mCharacterSkin = HulldomainCharacterSkinPass(*mDevice);
         mCharacterPatches = HulldomainCharacterPatchPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
                                                          static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
-        mCrowds = GpuCrowdSet(*mDevice);
         mCrowdPass = HulldomainCrowdPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
                                          static_cast<VkFormat>(info.depthFormat));
         mSubdivPass = HulldomainSubdivPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
                                            static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
-        initializeSubdiv();
         const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
-        mLayout = gpu::PipelineLayout(*mDevice,
-                                      {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
-                                       {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
-                                       {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics},
-                                       {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics},
-                                       {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics},
-                                       {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, graphics},
-                                       {TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
-                                       {TS_BINDING_EDGE_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, graphics},
-                                       {TS_BINDING_PATCH_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, graphics}},
-                                      0, 0, "hulldomain.terrainPatches.layout");
+        mLayout = terrainLayout(*mDevice, graphics,
+                                {{TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics},
+                                 {TS_BINDING_EDGE_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, graphics},
+                                 {TS_BINDING_PATCH_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, graphics}},
+                                0, 0, "hulldomain.terrainPatches.layout");
         gpu::GraphicsPipelineDesc desc;
-        desc.name = "hulldomain.terrainPatches.fill";
         desc.layout = &mLayout;
         desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, hulldomain_terrain_patch_vert_spv},
                        {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, hulldomain_terrain_patch_tesc_spv},
@@ -78,66 +70,42 @@ protected:
         desc.cullMode = VK_CULL_MODE_NONE;
         desc.colorFormats = {static_cast<VkFormat>(info.colorFormat)};
         desc.depthFormat = static_cast<VkFormat>(info.depthFormat);
-        mFillPipeline = gpu::Pipeline(*mDevice, desc);
-        if (mWireframeSupported) {
-            desc.name = "hulldomain.terrainPatches.wireframe";
-            desc.polygonMode = VK_POLYGON_MODE_LINE;
-            mWirePipeline = gpu::Pipeline(*mDevice, desc);
-        }
+        mPipelines = FillWirePipelines(*mDevice, desc, "hulldomain.terrainPatches", mWireframeSupported);
         return {};
     }
 
     void shutdownTechnique() override {
-        mFillPipeline = {};
-        mWirePipeline = {};
+        mPipelines = {};
         mLayout = {};
         mFactorPass = {};
         mCharacterSkin = {};
         mCharacterPatches = {};
-        mCrowds.clear();
         mCrowdPass = {};
         mSubdivPass = {};
     }
 
-public:
-    Result<backend::CrowdHandle> createCrowd(const backend::CrowdDesc& desc) override {
-        return mCrowds.create(
-            desc, [this](backend::CharacterHandle h) { return findCharacter(h); }, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    // Instanced crowds: the lists, commands and near slots are storage
+    // buffers the compute passes write.
+    VkBufferUsageFlags crowdWriteUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
+    void recordCrowdPasses(GpuCrowd& crowd, const CrowdFrame& frame) override {
+        CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
+                                     frame.uniforms);
+        mCrowdPass.recordCompute(*mFrame, crowd, descriptors, frame.instanceCount);
     }
-
-    void destroyCrowd(backend::CrowdHandle handle) override { mCrowds.destroy(handle); }
-
-    void drawCrowd(backend::CrowdHandle handle, const backend::CrowdDrawInfo& draw) override {
-        GpuCrowd* crowd = mCrowds.find(handle);
-        if (!crowd) return;
-        const uint32_t slot = mFrame->slot();
-        GpuCrowdSet::reportCounts(*crowd, slot, mReport);
-        const uint32_t count = crowd->uploadInstances(slot, draw.instances);
-        const gpu::UniformSlice uniforms = mFrame->pushUniform(crowd->uniforms(draw, count));
-        CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, *crowd, slot, mFrameUniforms, uniforms);
-        suspendMainPass();
-        mCrowdPass.recordCompute(*mFrame, *crowd, descriptors, count);
-        GpuCrowdSet::recordCountsCopy(mFrame->cmd(), *crowd, slot);
-        ensureMainPass();
-        mCrowdPass.recordDraws(*mFrame, *crowd, descriptors);
-        mReport.passes += 2 + TS_LOD_TIERS;
-        mReport.intermediateBytes += crowd->bytes();
-        mReport.crowdBytes += crowd->bytes();
+    void recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame& frame) override {
+        CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
+                                     frame.uniforms);
+        mCrowdPass.recordDraws(*mFrame, crowd, descriptors);
     }
-
-    Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle handle) override {
-        return mCrowds.readTiers(handle);
-    }
-
-protected:
+    uint32_t crowdPassCount() const override { return 2 + TS_LOD_TIERS; }
 
     VkBufferUsageFlags compressedCageUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
 
     VkBufferUsageFlags subdivWriteUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
-    void subdivPrePasses(GpuSubdiv& surface, const gpu::UniformSlice&) override {
+    void recordSubdivPasses(GpuSubdiv& surface, const gpu::UniformSlice&) override {
         mSubdivPass.recordRefine(*mFrame, surface);
     }
-    void subdivDraw(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) override {
+    void recordSubdivDraw(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) override {
         mSubdivPass.recordDraw(*mFrame, surface, mFrameUniforms, uniforms, mFrameInfo.wireframe);
     }
 
@@ -159,33 +127,21 @@ protected:
         for (uint32_t slot = 0; slot < gpu::kFramesInFlight; ++slot)
             mReport.intermediateBytes += terrain.edgeLevels(slot).size() + terrain.patchLevels(slot).size();
         // Continuous mode has one level for the draw: no per-edge pre-pass.
-        if (!continuous)
-            mFactorPass.record(*mFrame, terrain, tessUniforms,
-                               [this](VkPipelineBindPoint point, const gpu::PipelineLayout& layout, GpuTerrain& t,
-                                      std::span<const VkWriteDescriptorSet> extra) {
-                                   pushTerrainDescriptors(point, layout, t, extra);
-                               });
+        if (!continuous) mFactorPass.record(*mFrame, terrain, tessUniforms, terrainPush(terrain));
 
         ensureMainPass();
         gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");
         if (draw.visiblePatches.empty()) return;
         VkCommandBuffer cmd = mFrame->cmd();
-        const bool wire = mFrameInfo.wireframe && mWirePipeline.valid();
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (wire ? mWirePipeline : mFillPipeline).handle());
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines.get(mFrameInfo.wireframe).handle());
         const uint32_t slot = mFrame->slot();
         const VkDescriptorBufferInfo tessInfo = tessUniforms.descriptor();
         const VkDescriptorBufferInfo edgeLevels{terrain.edgeLevels(slot).handle(), 0, VK_WHOLE_SIZE};
         const VkDescriptorBufferInfo patchLevels{terrain.patchLevels(slot).handle(), 0, VK_WHOLE_SIZE};
-        VkWriteDescriptorSet writes[3] = {};
-        const std::pair<uint32_t, const VkDescriptorBufferInfo*> bindings[3] = {
-            {TS_BINDING_TESS, &tessInfo}, {TS_BINDING_EDGE_LEVELS, &edgeLevels}, {TS_BINDING_PATCH_LEVELS, &patchLevels}};
-        for (int i = 0; i < 3; ++i) {
-            writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-            writes[i].dstBinding = bindings[i].first;
-            writes[i].descriptorCount = 1;
-            writes[i].descriptorType = i == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-            writes[i].pBufferInfo = bindings[i].second;
-        }
+        const VkWriteDescriptorSet writes[3] = {
+            bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tessInfo),
+            bufferWrite(TS_BINDING_EDGE_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &edgeLevels),
+            bufferWrite(TS_BINDING_PATCH_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &patchLevels)};
         pushTerrainDescriptors(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, terrain, writes);
         gpu::Buffer& patchStream = terrain.writeVisiblePatches(slot, draw.visiblePatches);
         const VkBuffer buffers[1] = {patchStream.handle()};
@@ -200,20 +156,15 @@ private:
     HulldomainTessFactorPass mFactorPass;
     HulldomainCrowdPass mCrowdPass;
     HulldomainSubdivPass mSubdivPass;
-    GpuCrowdSet mCrowds;
     HulldomainCharacterSkinPass mCharacterSkin;
     HulldomainCharacterPatchPass mCharacterPatches;
     gpu::PipelineLayout mLayout;
-    gpu::Pipeline mFillPipeline;
-    gpu::Pipeline mWirePipeline;
+    FillWirePipelines mPipelines;
 };
-
-backend::Backend* create() { return new HulldomainBackend(); }
-void destroy(backend::Backend* b) { delete b; }
 
 } // namespace
 } // namespace tessera::backends
 
 TESSERA_REGISTER_PLUGIN(registry) {
-    registry.registerBackend({"hulldomain", &tessera::backends::create, &tessera::backends::destroy});
+    registry.registerBackend(tessera::backends::backendPlugin<tessera::backends::HulldomainBackend>("hulldomain"));
 }

@@ -41,14 +41,8 @@ HulldomainCharacterPatchPass::HulldomainCharacterPatchPass(gpu::Device& device, 
         desc.frontFace = VK_FRONT_FACE_CLOCKWISE;
         desc.colorFormats = {colorFormat};
         desc.depthFormat = depthFormat;
-        const std::string base = std::string("hulldomain.character.") + (single ? "singlePass" : "twoPass");
-        desc.name = base + ".fill";
-        mPipelines[single][0] = gpu::Pipeline(device, desc);
-        if (wireframe) {
-            desc.name = base + ".wireframe";
-            desc.polygonMode = VK_POLYGON_MODE_LINE;
-            mPipelines[single][1] = gpu::Pipeline(device, desc);
-        }
+        mPipelines[single] = FillWirePipelines(
+            device, desc, std::string("hulldomain.character.") + (single ? "singlePass" : "twoPass"), wireframe);
     }
 }
 
@@ -57,7 +51,7 @@ void HulldomainCharacterPatchPass::record(gpu::FrameContext& frame, const Charac
     VkCommandBuffer cmd = frame.cmd();
     GpuCharacter& c = *instance.character;
     const int single = path == backend::CharacterPath::SinglePass ? 1 : 0;
-    const gpu::Pipeline& pipeline = mPipelines[single][wireframe && mPipelines[single][1].valid() ? 1 : 0];
+    const gpu::Pipeline& pipeline = mPipelines[single].get(wireframe);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.handle());
     const VkDescriptorBufferInfo cage{c.vertices().handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo compressed{c.vertices().handle(), 0, VK_WHOLE_SIZE};

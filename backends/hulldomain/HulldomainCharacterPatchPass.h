@@ -6,6 +6,7 @@
 /// Two-pass: control points are the compressed vertices pass 1 wrote;
 /// single-pass: the domain stage skins all three corners at every point.
 
+#include "common/FillWirePipelines.h"
 #include "common/BasicCharacterBackend.h"
 #include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/PipelineLayout.h"
@@ -24,7 +25,7 @@ public:
 private:
     gpu::PipelineLayout mLayout;
     // [path][wireframe]
-    gpu::Pipeline mPipelines[2][2];
+    FillWirePipelines mPipelines[2]; ///< [single-pass]
 };
 
 } // namespace tessera::backends

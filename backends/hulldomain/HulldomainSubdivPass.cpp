@@ -26,18 +26,14 @@ HulldomainSubdivPass::HulldomainSubdivPass(gpu::Device& device, VkFormat colorFo
                                            bool wireframe)
     : mDevice(&device) {
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-    mRefineLayout = gpu::PipelineLayout(device,
-                                        {{TS_BINDING_SUBDIV_STENCILS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, compute},
-                                         {TS_BINDING_SUBDIV_ENTRIES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, compute},
-                                         {TS_BINDING_SUBDIV_CAGE, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, compute},
-                                         {TS_BINDING_SUBDIV_POINTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute}},
-                                        sizeof(uint32_t), compute, "hulldomain.subdivRefine.layout");
+    std::vector<gpu::BindingDesc> refine = GpuSubdiv::refineBindings(compute);
+    refine.push_back({TS_BINDING_SUBDIV_POINTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute});
+    mRefineLayout = gpu::PipelineLayout(device, refine, sizeof(uint32_t), compute, "hulldomain.subdivRefine.layout");
     mRefine = gpu::ComputePipeline(device, mRefineLayout, hulldomain_subdiv_refine_comp_spv, "hulldomain.subdivRefine");
 
     const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
-    std::vector<gpu::BindingDesc> bindings = GpuSubdiv::evalBindings(graphics);
+    std::vector<gpu::BindingDesc> bindings = GpuSubdiv::levelBindings(graphics);
     bindings.push_back({TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics});
-    bindings.push_back({TS_BINDING_SUBDIV_SUPPORT, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, graphics});
     mLayout = gpu::PipelineLayout(device, bindings, 0, 0, "hulldomain.subdiv.layout");
     gpu::GraphicsPipelineDesc desc;
     desc.layout = &mLayout;
@@ -55,15 +51,8 @@ HulldomainSubdivPass::HulldomainSubdivPass(gpu::Device& device, VkFormat colorFo
     desc.depthFormat = depthFormat;
     for (int twoSided = 0; twoSided < 2; ++twoSided) {
         desc.cullMode = twoSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-        const std::string base = std::string("hulldomain.subdiv.") + (twoSided ? "twoSided" : "closed");
-        desc.name = base + ".fill";
-        desc.polygonMode = VK_POLYGON_MODE_FILL;
-        mPipelines[twoSided][0] = gpu::Pipeline(device, desc);
-        if (wireframe) {
-            desc.name = base + ".wireframe";
-            desc.polygonMode = VK_POLYGON_MODE_LINE;
-            mPipelines[twoSided][1] = gpu::Pipeline(device, desc);
-        }
+        mPipelines[twoSided] = FillWirePipelines(
+            device, desc, std::string("hulldomain.subdiv.") + (twoSided ? "twoSided" : "closed"), wireframe);
     }
 }
 
@@ -74,14 +63,11 @@ void HulldomainSubdivPass::recordRefine(gpu::FrameContext& frame, GpuSubdiv& sur
     gpu::memoryBarrier(cmd, kDrawReads, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                        VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mRefine.handle());
-    const VkBufferView stencils = surface.stencilsView(), entries = surface.entriesView();
-    const VkBufferView cage = surface.cageView(frame.slot());
     const VkDescriptorBufferInfo points{surface.points().handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet writes[4] = {texelWrite(TS_BINDING_SUBDIV_STENCILS, &stencils),
-                                            texelWrite(TS_BINDING_SUBDIV_ENTRIES, &entries),
-                                            texelWrite(TS_BINDING_SUBDIV_CAGE, &cage),
-                                            bufferWrite(TS_BINDING_SUBDIV_POINTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &points)};
-    mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mRefineLayout.handle(), 0, 4, writes);
+    std::vector<VkWriteDescriptorSet> writes = surface.refineWrites(frame.slot());
+    writes.push_back(bufferWrite(TS_BINDING_SUBDIV_POINTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &points));
+    mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mRefineLayout.handle(), 0,
+                                       uint32_t(writes.size()), writes.data());
     const uint32_t count = surface.refinedPointCount();
     vkCmdPushConstants(cmd, mRefineLayout.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof count, &count);
     vkCmdDispatch(cmd, (count + 63) / 64, 1, 1);
@@ -95,13 +81,10 @@ void HulldomainSubdivPass::recordDraw(gpu::FrameContext& frame, GpuSubdiv& surfa
     VkCommandBuffer cmd = frame.cmd();
     gpu::PassScope pass(frame, "subdiv.draw");
     const int twoSided = surface.closed() ? 0 : 1;
-    const int wire = wireframe && mPipelines[twoSided][1].valid() ? 1 : 0;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines[twoSided][wire].handle());
-    std::vector<VkWriteDescriptorSet> writes = surface.evalWrites(uniforms);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines[twoSided].get(wireframe).handle());
+    std::vector<VkWriteDescriptorSet> writes = surface.levelWrites(uniforms);
     const VkDescriptorBufferInfo frameInfo = frameUniforms.descriptor();
-    const VkBufferView support = surface.supportView();
     writes.push_back(bufferWrite(TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &frameInfo));
-    writes.push_back(texelWrite(TS_BINDING_SUBDIV_SUPPORT, &support));
     mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0,
                                        uint32_t(writes.size()), writes.data());
     // At most 65,536 tessellated vertices per draw: lavapipe indexes a

@@ -7,6 +7,7 @@
 /// whose domain stage evaluates the shared subdiv_eval.glsl at
 /// gl_TessCoord, levels up to 64.
 
+#include "common/FillWirePipelines.h"
 #include "common/GpuSubdiv.h"
 #include "tessera/gpu/ComputePipeline.h"
 #include "tessera/gpu/FrameContext.h"
@@ -32,7 +33,7 @@ private:
     gpu::PipelineLayout mRefineLayout;
     gpu::ComputePipeline mRefine;
     gpu::PipelineLayout mLayout;
-    gpu::Pipeline mPipelines[2][2]; ///< [two-sided][wireframe]
+    FillWirePipelines mPipelines[2]; ///< [two-sided]
 };
 
 } // namespace tessera::backends

@@ -1,5 +1,6 @@
 #include "HulldomainTessFactorPass.h"
 
+#include "common/TerrainBindings.h"
 #include "tessera/gpu/Barriers.h"
 
 #include "common/CommandHelpers.h"
@@ -13,25 +14,19 @@ namespace tessera::backends {
 
 HulldomainTessFactorPass::HulldomainTessFactorPass(gpu::Device& device, const std::string& backendName) {
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
-                                   {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
-                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                                   {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                                   {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                                   {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, compute},
-                                   {TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
-                                   {TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
-                                   {TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
-                                   {TS_BINDING_EDGE_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
-                                   {TS_BINDING_PATCH_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute}},
-                                  0, 0, backendName + ".terrainFactors.layout");
+    mLayout = terrainLayout(device, compute,
+                            {{TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
+                             {TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
+                             {TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
+                             {TS_BINDING_EDGE_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute},
+                             {TS_BINDING_PATCH_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute}},
+                            0, 0, backendName + ".terrainFactors.layout");
     mPipeline =
         gpu::ComputePipeline(device, mLayout, hulldomain_terrain_factors_comp_spv, backendName + ".terrainFactors");
 }
 
 void HulldomainTessFactorPass::record(gpu::FrameContext& frame, GpuTerrain& terrain,
-                                      const gpu::UniformSlice& tessUniforms, const PushBindings& pushBindings) {
+                                      const gpu::UniformSlice& tessUniforms, const PushTerrainBindings& pushBindings) {
     gpu::PassScope pass(frame, "terrain.factors");
     VkCommandBuffer cmd = frame.cmd();
     const uint32_t slot = frame.slot();
@@ -47,7 +42,7 @@ void HulldomainTessFactorPass::record(gpu::FrameContext& frame, GpuTerrain& terr
                                       bufferWrite(TS_BINDING_PATCH_ERROR, storage, &patchErrors),
                                       bufferWrite(TS_BINDING_EDGE_LEVELS, storage, &edgeLevels),
                                       bufferWrite(TS_BINDING_PATCH_LEVELS, storage, &patchLevels)};
-    pushBindings(VK_PIPELINE_BIND_POINT_COMPUTE, mLayout, terrain, writes);
+    pushBindings(VK_PIPELINE_BIND_POINT_COMPUTE, mLayout, writes);
     const uint32_t invocations = terrain.edgeCount() + terrain.patchCount();
     vkCmdDispatch(cmd, (invocations + 63) / 64, 1, 1);
 

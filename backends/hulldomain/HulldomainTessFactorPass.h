@@ -6,23 +6,18 @@
 /// of the hull shader so each shared edge is evaluated once.
 
 #include "common/GpuTerrain.h"
+#include "common/TerrainBindings.h"
 #include "tessera/shaders/TessFactors.h"
 #include "tessera/gpu/ComputePipeline.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/PipelineLayout.h"
 
-#include <functional>
-#include <span>
 #include <string>
 
 namespace tessera::backends {
 
 class HulldomainTessFactorPass {
 public:
-    /// Pushes the frame, terrain and height-map bindings plus `extra` for a layout.
-    using PushBindings = std::function<void(VkPipelineBindPoint, const gpu::PipelineLayout&, GpuTerrain&,
-                                            std::span<const VkWriteDescriptorSet>)>;
-
     HulldomainTessFactorPass() = default;
     HulldomainTessFactorPass(gpu::Device& device, const std::string& backendName);
 
@@ -30,7 +25,7 @@ public:
     /// into the slot's level buffers, then a barrier that makes them visible
     /// to the tessellation control stage.
     void record(gpu::FrameContext& frame, GpuTerrain& terrain, const gpu::UniformSlice& tessUniforms,
-                const PushBindings& pushBindings);
+                const PushTerrainBindings& pushBindings);
 
 private:
     gpu::PipelineLayout mLayout;

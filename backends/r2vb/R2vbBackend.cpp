@@ -37,12 +37,9 @@
 // histogram pyramid over the creature-sorted instances, the lists' counts
 // and the lists compacted by traversing it) and R2vbCrowdNearPass (near
 // slots, their commands and skinned compressed cages); the tiers are then
-// drawn by the shared CrowdMeshPass and EmulatedCrowdNearPass.
-#include "common/CrowdDescriptors.h"
-#include "common/CrowdMeshPass.h"
-#include "common/EmulatedCrowdNearPass.h"
+// drawn by EmulatedTerrainBackend (EmulatedCrowdNearPass, CrowdMeshPass).
+#include "common/BackendPlugin.h"
 #include "common/EmulatedTerrainBackend.h"
-#include "common/GpuCrowdSet.h"
 #include "R2vbCagePass.h"
 #include "R2vbCharacterSkinPass.h"
 #include "R2vbCommandPass.h"
@@ -54,10 +51,6 @@
 #include "R2vbSubdivRefinePass.h"
 #include "R2vbSubdivTargets.h"
 #include "R2vbTargets.h"
-#include "tessera/backend/PluginApi.h"
-
-#include "character.frag_crowd_texels.spv.h"
-#include "crowd_mesh.vert_texels.spv.h"
 
 #include <algorithm>
 #include <array>
@@ -69,8 +62,8 @@ namespace tessera::backends {
 namespace {
 
 class R2vbBackend final : public EmulatedTerrainBackend {
-public:
-    backend::BackendCapabilities capabilities(const device::DeviceFeatures* device) override {
+protected:
+    backend::BackendCapabilities describeCapabilities() const override {
         backend::BackendCapabilities caps;
         caps.name = "r2vb";
         caps.description = "D3D9-style: render-to-vertex-buffer multipass, emulated tessellator";
@@ -79,12 +72,10 @@ public:
         caps.terrainModes = 0b111;
         caps.crowd = true;
         caps.subdiv = true;
-        checkRequirements(device, caps);
         return caps;
     }
 
-protected:
-    Status initializeFactorPasses(const backend::BackendInitInfo& info) override {
+    Status initializeFactorPasses(const backend::BackendInitInfo&) override {
         // The command pass writes a record's two texels and five commands at
         // once; every desktop driver and lavapipe have 8 attachments.
         const VkPhysicalDeviceLimits& limits = mDevice->properties().limits;
@@ -99,22 +90,12 @@ protected:
         mCharacterSkin = R2vbCharacterSkinPass(*mDevice);
         mSubdivRefine = R2vbSubdivRefinePass(*mDevice);
         mSubdivCommands = R2vbSubdivCommandPass(*mDevice);
-        mCrowds = GpuCrowdSet(*mDevice);
         mCrowdBinning = R2vbCrowdBinningPass(*mDevice);
         mCrowdNear = R2vbCrowdNearPass(*mDevice);
-        const auto color = static_cast<VkFormat>(info.colorFormat);
-        const auto depth = static_cast<VkFormat>(info.depthFormat);
-        mCrowdMesh = CrowdMeshPass(*mDevice, CrowdDescriptors::Mode::Texels, crowd_mesh_vert_texels_spv,
-                                   character_frag_crowd_texels_spv, color, depth, "r2vb.crowd.mesh");
-        mCrowdNearDraw = EmulatedCrowdNearPass(*mDevice, color, depth, "r2vb");
         return {};
     }
 
     void shutdownFactorPasses() override {
-        mCrowdTargets.clear();
-        mCrowds.clear();
-        mCrowdNearDraw = {};
-        mCrowdMesh = {};
         mCrowdNear = {};
         mCrowdBinning = {};
         for (auto& targets : mTargets) targets = {};
@@ -132,10 +113,7 @@ protected:
         R2vbTargets& targets = targetsFor(slot, terrain.patchCount());
         const uint32_t patches = static_cast<uint32_t>(draw.visiblePatches.size());
         const gpu::Buffer& patchStream = terrain.writeVisiblePatches(slot, draw.visiblePatches);
-        const r2vb::PushBindings push = [&](const gpu::PipelineLayout& layout,
-                                            std::span<const VkWriteDescriptorSet> extra) {
-            pushTerrainDescriptors(VK_PIPELINE_BIND_POINT_GRAPHICS, layout, terrain, extra);
-        };
+        const PushTerrainBindings push = terrainPush(terrain);
         // Continuous mode has one level for the draw: no cage, no per-edge levels.
         if (draw.tessellation.mode != backend::TerrainMode::Continuous) {
             mCagePass.record(*mFrame, targets, patchStream, patches, tessUniforms, push);
@@ -173,56 +151,37 @@ protected:
     }
 
     void recordSubdivRefine(GpuSubdiv& surface) override {
-        mSubdivRefine.record(*mFrame, surface, subdivTargets(surface));
+        mSubdivRefine.record(*mFrame, surface, surface.extensionAs<R2vbSubdivTargets>());
     }
 
     EmulatedDrawSource recordSubdivFactorPasses(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) override {
-        return mSubdivCommands.record(*mFrame, surface, subdivTargets(surface), uniforms, emuKeyTable());
+        return mSubdivCommands.record(*mFrame, surface, surface.extensionAs<R2vbSubdivTargets>(), uniforms,
+                                      emuKeyTable());
     }
 
-public:
-    /// Also fails, naming the limit, when the crowd's render targets would
-    /// not fit this device (R2vbCrowdTargets).
-    Result<backend::CrowdHandle> createCrowd(const backend::CrowdDesc& desc) override {
-        auto handle = mCrowds.create(
-            desc, [this](backend::CharacterHandle h) { return findCharacter(h); }, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-        if (!handle) return handle.error();
-        const uint32_t id = handle.value().id;
-        auto targets = R2vbCrowdTargets::create(*mDevice, *mCrowds.find(handle.value()), id);
-        if (!targets) {
-            mCrowds.destroy(handle.value());
-            return targets.error();
-        }
-        if (mCrowdTargets.size() <= id) mCrowdTargets.resize(id + 1);
-        mCrowdTargets[id] = std::move(targets.value());
-        return handle;
+    // Instanced crowds: lists, commands and near slots are the destinations
+    // of the render targets' copies; the targets are each crowd's own.
+    VkBufferUsageFlags crowdWriteUsage() const override { return VK_BUFFER_USAGE_TRANSFER_DST_BIT; }
+
+    /// Fails, naming the limit, when the crowd's render targets would not
+    /// fit this device (R2vbCrowdTargets).
+    Status attachCrowdResources(GpuCrowd& crowd, backend::CrowdHandle handle) override {
+        auto targets = R2vbCrowdTargets::create(*mDevice, crowd, handle.id);
+        if (!targets) return targets.error();
+        crowd.attach(std::move(targets.value()));
+        return {};
     }
 
-    void destroyCrowd(backend::CrowdHandle handle) override {
-        if (!mCrowds.find(handle)) return;
-        mCrowds.destroy(handle);
-        // A frame in flight may still render into them.
-        std::shared_ptr<R2vbCrowdTargets> old(std::move(mCrowdTargets[handle.id]));
-        mDevice->deferDestroy([old]() mutable { old.reset(); });
-    }
-
-    void drawCrowd(backend::CrowdHandle handle, const backend::CrowdDrawInfo& draw) override {
-        GpuCrowd* crowd = mCrowds.find(handle);
-        if (!crowd || handle.id >= mCrowdTargets.size() || !mCrowdTargets[handle.id]) return;
-        R2vbCrowdTargets& targets = *mCrowdTargets[handle.id];
-        const uint32_t slot = mFrame->slot();
-        GpuCrowdSet::reportCounts(*crowd, slot, mReport);
-        const uint32_t count = crowd->uploadInstances(slot, draw.instances);
-        const gpu::UniformSlice uniforms = mFrame->pushUniform(crowd->uniforms(draw, count));
-        suspendMainPass();
+    void recordCrowdPasses(GpuCrowd& crowd, const CrowdFrame& frame) override {
+        R2vbCrowdTargets& targets = crowd.extensionAs<R2vbCrowdTargets>();
         r2vb::crowd::FrameInputs in;
-        in.crowd = crowd;
+        in.crowd = &crowd;
         in.targets = &targets;
-        in.instanceCount = count;
-        in.uniforms = uniforms.descriptor();
-        in.instances = crowd->instancesView(slot);
+        in.instanceCount = frame.instanceCount;
+        in.uniforms = frame.uniforms.descriptor();
+        in.instances = crowd.instancesView(frame.slot);
         in.constants.pyramid = glm::uvec4(targets.pyramidSide(), targets.pyramidTop(), 0u, targets.listRegionTexels());
-        const std::vector<glm::uvec2>& ranges = crowd->creatureRanges(slot);
+        const std::vector<glm::uvec2>& ranges = crowd.creatureRanges(frame.slot);
         for (uint32_t c = 0; c < ranges.size() && c < TS_CROWD_MAX_CHARACTERS; ++c) {
             glm::uvec4& pair = in.constants.ranges[c / 2];
             pair[(c & 1u) * 2] = ranges[c].x;
@@ -230,34 +189,20 @@ public:
         }
         mCrowdBinning.record(*mFrame, in);
         mCrowdNear.record(*mFrame, in);
-        GpuCrowdSet::recordCountsCopy(mFrame->cmd(), *crowd, slot);
-        ensureMainPass();
-        CrowdDescriptors descriptors(CrowdDescriptors::Mode::Texels, *crowd, slot, mFrameUniforms, uniforms);
-        mCrowdNearDraw.record(*mFrame, *crowd, descriptors);
-        mCrowdMesh.record(*mFrame, *crowd, descriptors);
-        mReport.passes += R2vbCrowdBinningPass::kPasses + R2vbCrowdNearPass::kPasses + TS_LOD_TIERS;
-        mReport.intermediateBytes += crowd->bytes() + targets.bytes();
-        mReport.crowdBytes += crowd->bytes() + targets.bytes();
     }
 
-    Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle handle) override {
-        return mCrowds.readTiers(handle);
+    uint32_t crowdPassCount() const override {
+        return R2vbCrowdBinningPass::kPasses + R2vbCrowdNearPass::kPasses + TS_LOD_TIERS;
     }
 
 private:
-    /// A surface's targets (attached at createSubdiv).
-    static R2vbSubdivTargets& subdivTargets(GpuSubdiv& surface) {
-        return *static_cast<R2vbSubdivTargets*>(surface.extension());
-    }
-
     /// The slot's targets, made (once per terrain size) large enough for every
     /// patch of a terrain of `patchCount` patches.
     R2vbTargets& targetsFor(uint32_t slot, uint32_t patchCount) {
         R2vbTargets& targets = mTargets[slot];
         if (targets.patchCapacity() >= patchCount) return targets;
         // An earlier draw of this frame may still use the old ones.
-        auto old = std::make_shared<R2vbTargets>(std::move(targets));
-        mDevice->deferDestroy([old]() mutable { old.reset(); });
+        mDevice->deferRelease(std::move(targets));
         targets = R2vbTargets(*mDevice, patchCount, slot);
         return targets;
     }
@@ -269,21 +214,13 @@ private:
     R2vbSubdivRefinePass mSubdivRefine;
     R2vbSubdivCommandPass mSubdivCommands;
     std::array<R2vbTargets, gpu::kFramesInFlight> mTargets;
-    GpuCrowdSet mCrowds;
-    /// Per crowd handle id (null once destroyed): its binning targets.
-    std::vector<std::unique_ptr<R2vbCrowdTargets>> mCrowdTargets;
     R2vbCrowdBinningPass mCrowdBinning;
     R2vbCrowdNearPass mCrowdNear;
-    CrowdMeshPass mCrowdMesh;
-    EmulatedCrowdNearPass mCrowdNearDraw;
 };
-
-backend::Backend* create() { return new R2vbBackend(); }
-void destroy(backend::Backend* b) { delete b; }
 
 } // namespace
 } // namespace tessera::backends
 
 TESSERA_REGISTER_PLUGIN(registry) {
-    registry.registerBackend({"r2vb", &tessera::backends::create, &tessera::backends::destroy});
+    registry.registerBackend(tessera::backends::backendPlugin<tessera::backends::R2vbBackend>("r2vb"));
 }

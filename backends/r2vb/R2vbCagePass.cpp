@@ -1,5 +1,6 @@
 #include "R2vbCagePass.h"
 
+#include "common/TerrainBindings.h"
 #include "tessera/shaders/FrameUniforms.h"
 #include "tessera/shaders/TerrainUniforms.h"
 #include "tessera/shaders/TessFactors.h"
@@ -12,14 +13,7 @@ namespace tessera::backends {
 
 R2vbCagePass::R2vbCagePass(gpu::Device& device) {
     const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex}},
+    mLayout = terrainLayout(device, vertex, {{TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex}},
                                   sizeof(shader::R2vbTargetConstants), vertex, "r2vb.cage.layout");
     gpu::GraphicsPipelineDesc desc = r2vb::pointPipeline("r2vb.cage", mLayout, r2vb_cage_vert_spv, r2vb_cage_frag_spv,
                                                          {VK_FORMAT_R32G32B32A32_SFLOAT});
@@ -32,7 +26,7 @@ R2vbCagePass::R2vbCagePass(gpu::Device& device) {
 
 void R2vbCagePass::record(gpu::FrameContext& frame, R2vbTargets& targets, const gpu::Buffer& patchStream,
                           uint32_t patches, const gpu::UniformSlice& tessUniforms,
-                          const r2vb::PushBindings& pushBindings) {
+                          const PushTerrainBindings& pushBindings) {
     gpu::PassScope pass(frame, "r2vb.cage");
     VkCommandBuffer cmd = frame.cmd();
     gpu::Image& cage = targets.cage();
@@ -50,7 +44,7 @@ void R2vbCagePass::record(gpu::FrameContext& frame, R2vbTargets& targets, const 
     const VkDescriptorBufferInfo tess = tessUniforms.descriptor();
     const VkWriteDescriptorSet writes[1] = {
         bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess)};
-    pushBindings(mLayout, writes);
+    pushBindings(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, writes);
     const VkBuffer stream = patchStream.handle();
     const VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &stream, &offset);

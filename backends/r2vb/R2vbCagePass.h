@@ -5,6 +5,7 @@
 /// displaced corner and its grid vertex ID, for the factor pass to fetch.
 
 #include "R2vbRecording.h"
+#include "common/TerrainBindings.h"
 #include "R2vbTargets.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"
@@ -21,7 +22,7 @@ public:
     /// `patchStream`, and leaves targets.cage() SHADER_READ_ONLY_OPTIMAL and
     /// visible to vertex-shader fetches.
     void record(gpu::FrameContext& frame, R2vbTargets& targets, const gpu::Buffer& patchStream, uint32_t patches,
-                const gpu::UniformSlice& tessUniforms, const r2vb::PushBindings& pushBindings);
+                const gpu::UniformSlice& tessUniforms, const PushTerrainBindings& pushBindings);
 
 private:
     gpu::PipelineLayout mLayout;

@@ -25,12 +25,7 @@ R2vbCharacterSkinPass::R2vbCharacterSkinPass(gpu::Device& device) : mDevice(&dev
     gpu::GraphicsPipelineDesc desc =
         r2vb::pointPipeline("r2vb.characterSkin", mLayout, r2vb_character_skin_vert_spv,
                             r2vb_character_skin_frag_spv, {VK_FORMAT_R32G32B32A32_UINT});
-    desc.vertexBindings = {{0, sizeof(shader::CharacterVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, positionU)},
-                             {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, normalV)},
-                             {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, tangent)},
-                             {3, 0, VK_FORMAT_R32G32B32A32_UINT, offsetof(shader::CharacterVertex, joints)},
-                             {4, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, weights)}};
+    GpuCharacter::useCageVertexStream(desc);
     mPipeline = gpu::Pipeline(device, desc);
 }
 

@@ -1,5 +1,6 @@
 #include "R2vbCommandPass.h"
 
+#include "common/TerrainBindings.h"
 #include "tessera/shaders/FrameUniforms.h"
 #include "tessera/shaders/TerrainUniforms.h"
 #include "tessera/shaders/TessFactors.h"
@@ -21,17 +22,11 @@ constexpr VkDeviceSize kVec4Bytes = 16;
 
 R2vbCommandPass::R2vbCommandPass(gpu::Device& device) {
     const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vertex},
-                                   {TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex}},
-                                  sizeof(shader::R2vbTargetConstants), vertex, "r2vb.commands.layout");
+    mLayout = terrainLayout(device, vertex,
+                            {{TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
+                             {TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vertex},
+                             {TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex}},
+                            sizeof(shader::R2vbTargetConstants), vertex, "r2vb.commands.layout");
     std::vector<VkFormat> formats(R2VB_COMMAND_TARGETS, VK_FORMAT_R32G32B32A32_UINT);
     formats[R2vbTargets::kOuterTarget] = VK_FORMAT_R32G32B32A32_SFLOAT;
     formats[R2vbTargets::kInnerTarget] = VK_FORMAT_R32G32B32A32_SFLOAT;
@@ -47,7 +42,7 @@ R2vbCommandPass::R2vbCommandPass(gpu::Device& device) {
 
 uint32_t R2vbCommandPass::record(gpu::FrameContext& frame, R2vbTargets& targets, const gpu::Buffer& patchStream,
                                  uint32_t patches, const gpu::Buffer& patchErrors, const gpu::Buffer& keyTable,
-                                 const gpu::UniformSlice& tessUniforms, const r2vb::PushBindings& pushBindings) {
+                                 const gpu::UniformSlice& tessUniforms, const PushTerrainBindings& pushBindings) {
     VkCommandBuffer cmd = frame.cmd();
     auto& images = targets.recordTargets();
     const uint32_t rows = R2vbTargets::recordRows(patches);
@@ -76,7 +71,7 @@ uint32_t R2vbCommandPass::record(gpu::FrameContext& frame, R2vbTargets& targets,
             bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess),
             bufferWrite(TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &errors),
             bufferWrite(TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &keys)};
-        pushBindings(mLayout, writes);
+        pushBindings(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, writes);
         const VkBuffer streams[2] = {targets.factorStream().handle(), patchStream.handle()};
         const VkDeviceSize offsets[2] = {0, 0};
         vkCmdBindVertexBuffers(cmd, 0, 2, streams, offsets);

@@ -8,6 +8,7 @@
 /// draws from.
 
 #include "R2vbRecording.h"
+#include "common/TerrainBindings.h"
 #include "R2vbTargets.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"
@@ -27,7 +28,7 @@ public:
     /// records visible to vertex shaders and the commands to indirect draws.
     uint32_t record(gpu::FrameContext& frame, R2vbTargets& targets, const gpu::Buffer& patchStream, uint32_t patches,
                     const gpu::Buffer& patchErrors, const gpu::Buffer& keyTable, const gpu::UniformSlice& tessUniforms,
-                    const r2vb::PushBindings& pushBindings);
+                    const PushTerrainBindings& pushBindings);
 
 private:
     void copyToBuffers(VkCommandBuffer cmd, R2vbTargets& targets, uint32_t rows, uint32_t capacity);

@@ -45,12 +45,7 @@ R2vbCrowdNearPass::R2vbCrowdNearPass(gpu::Device& device)
                                                          r2vb_crowd_texel_frag_spv, {kUint4});
     // The crowd's bind-pose vertices (every creature's cage) as a stream;
     // each slot's draw starts at its creature's cage.
-    skin.vertexBindings = {{0, sizeof(shader::CharacterVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    skin.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, positionU)},
-                             {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, normalV)},
-                             {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, tangent)},
-                             {3, 0, VK_FORMAT_R32G32B32A32_UINT, offsetof(shader::CharacterVertex, joints)},
-                             {4, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, weights)}};
+    GpuCharacter::useCageVertexStream(skin);
     mSkin = gpu::Pipeline(device, skin);
 }
 

@@ -1,5 +1,6 @@
 #include "R2vbCrowdRecording.h"
 
+#include "R2vbRecording.h"
 #include "tessera/shaders/CrowdInstance.h"
 #include "tessera/gpu/Barriers.h"
 
@@ -42,28 +43,9 @@ void push(gpu::Device& device, VkCommandBuffer cmd, const gpu::PipelineLayout& l
 }
 
 void beginArea(VkCommandBuffer cmd, std::span<gpu::Image* const> targets, VkRect2D area, VkClearColorValue clear) {
-    std::vector<VkRenderingAttachmentInfo> attachments(targets.size());
-    for (size_t i = 0; i < targets.size(); ++i) {
-        VkRenderingAttachmentInfo& a = attachments[i];
-        a.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
-        a.imageView = targets[i]->view();
-        a.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        // Cleared so a texel no point lands on reads as nothing: no counts,
-        // no entry, an unused slot, an indirect draw of no vertices.
-        a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-        a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-        a.clearValue.color = clear;
-    }
-    VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = area;
-    rendering.layerCount = 1;
-    rendering.colorAttachmentCount = uint32_t(attachments.size());
-    rendering.pColorAttachments = attachments.data();
-    vkCmdBeginRendering(cmd, &rendering);
     const VkViewport viewport{
         float(area.offset.x), float(area.offset.y), float(area.extent.width), float(area.extent.height), 0.0f, 1.0f};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &area);
+    beginTargets(cmd, targets, area, viewport, clear);
 }
 
 void beginWhole(VkCommandBuffer cmd, std::span<gpu::Image* const> targets) {

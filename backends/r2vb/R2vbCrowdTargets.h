@@ -3,11 +3,13 @@
 /// One instanced crowd's render targets and small buffers for r2vb's culling
 /// and LOD binning (layouts in shaders/R2vbCrowdLayout.h), sized once from
 /// the crowd (maxIds, maxInstances, creatures, nearSlots x nearStride) and
-/// checked against the device's largest render target at createCrowd. They
-/// are shared by the frames in flight, as GpuCrowd's buffers are: the
-/// passes' barriers order one frame's use after the last.
+/// checked against the device's largest render target at createCrowd, and
+/// attached to the crowd (its TechniqueExtension). They are shared by the
+/// frames in flight, as GpuCrowd's buffers are: the passes' barriers order
+/// one frame's use after the last.
 
 #include "common/GpuCrowd.h"
+#include "common/TechniqueExtension.h"
 #include "shaders/R2vbCrowdLayout.h"
 #include "tessera/core/Result.h"
 #include "tessera/gpu/Buffer.h"
@@ -20,7 +22,7 @@
 
 namespace tessera::backends {
 
-class R2vbCrowdTargets {
+class R2vbCrowdTargets final : public TechniqueExtension {
 public:
     /// The targets of `crowd`, named "r2vb.crowd<id>.<what>", or an error
     /// naming the device limit a target would exceed.
@@ -63,7 +65,7 @@ public:
     gpu::Image& nearCages() { return mNearCages; }
 
     /// Bytes of every target and buffer above.
-    uint64_t bytes() const { return mBytes; }
+    uint64_t bytes() const override { return mBytes; }
 
 private:
     R2vbCrowdTargets() = default;

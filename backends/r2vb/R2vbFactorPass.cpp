@@ -1,5 +1,6 @@
 #include "R2vbFactorPass.h"
 
+#include "common/TerrainBindings.h"
 #include "tessera/shaders/FrameUniforms.h"
 #include "tessera/shaders/TerrainUniforms.h"
 #include "tessera/shaders/TessFactors.h"
@@ -12,17 +13,11 @@ namespace tessera::backends {
 
 R2vbFactorPass::R2vbFactorPass(gpu::Device& device) {
     const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vertex},
-                                   {R2VB_BINDING_CAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex}},
-                                  sizeof(shader::R2vbTargetConstants), vertex, "r2vb.factors.layout");
+    mLayout = terrainLayout(device, vertex,
+                            {{TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
+                             {TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vertex},
+                             {R2VB_BINDING_CAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex}},
+                            sizeof(shader::R2vbTargetConstants), vertex, "r2vb.factors.layout");
     gpu::GraphicsPipelineDesc desc = r2vb::pointPipeline("r2vb.factors", mLayout, r2vb_factors_vert_spv,
                                                          r2vb_factors_frag_spv, {VK_FORMAT_R32_SFLOAT});
     // Four points (edges) per instance; the instance's patch from the
@@ -35,7 +30,7 @@ R2vbFactorPass::R2vbFactorPass(gpu::Device& device) {
 
 void R2vbFactorPass::record(gpu::FrameContext& frame, R2vbTargets& targets, const gpu::Buffer& patchStream,
                             uint32_t patches, const gpu::Buffer& edgeErrors, const gpu::UniformSlice& tessUniforms,
-                            const r2vb::PushBindings& pushBindings) {
+                            const PushTerrainBindings& pushBindings) {
     VkCommandBuffer cmd = frame.cmd();
     {
         gpu::PassScope pass(frame, "r2vb.factors");
@@ -58,7 +53,7 @@ void R2vbFactorPass::record(gpu::FrameContext& frame, R2vbTargets& targets, cons
             bufferWrite(TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &errors),
             bufferWrite(R2VB_BINDING_CAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, nullptr)};
         writes[2].pImageInfo = &cage;
-        pushBindings(mLayout, writes);
+        pushBindings(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, writes);
         const VkBuffer stream = patchStream.handle();
         const VkDeviceSize offset = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &stream, &offset);

@@ -7,6 +7,7 @@
 /// buffer that the command pass reads as a vertex stream.
 
 #include "R2vbRecording.h"
+#include "common/TerrainBindings.h"
 #include "R2vbTargets.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"
@@ -25,7 +26,7 @@ public:
     /// vertex-attribute reads. `edgeErrors` holds TerrainDetail's per-edge errors.
     void record(gpu::FrameContext& frame, R2vbTargets& targets, const gpu::Buffer& patchStream, uint32_t patches,
                 const gpu::Buffer& edgeErrors, const gpu::UniformSlice& tessUniforms,
-                const r2vb::PushBindings& pushBindings);
+                const PushTerrainBindings& pushBindings);
 
 private:
     void copyToStream(VkCommandBuffer cmd, R2vbTargets& targets, uint32_t patches);

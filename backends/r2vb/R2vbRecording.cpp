@@ -22,31 +22,36 @@ gpu::GraphicsPipelineDesc pointPipeline(const std::string& name, const gpu::Pipe
     return desc;
 }
 
-void beginPoints(VkCommandBuffer cmd, std::span<gpu::Image* const> targets, uint32_t rows,
-                 const gpu::PipelineLayout& layout) {
-    const uint32_t width = targets.front()->width();
-    const uint32_t height = targets.front()->height();
+void beginTargets(VkCommandBuffer cmd, std::span<gpu::Image* const> targets, const VkRect2D& area,
+                  const VkViewport& viewport, VkClearColorValue clear) {
     std::vector<VkRenderingAttachmentInfo> attachments(targets.size());
     for (size_t i = 0; i < targets.size(); ++i) {
         VkRenderingAttachmentInfo& a = attachments[i];
         a.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
         a.imageView = targets[i]->view();
         a.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-        // Cleared so a texel no point lands on reads as zero: for a command
-        // target that is an indirect draw of nothing.
+        // Cleared so a texel no point lands on reads as nothing: zero
+        // levels, no counts, no entry, an unused slot, an indirect draw of
+        // no vertices.
         a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
         a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-        a.clearValue.color = {};
+        a.clearValue.color = clear;
     }
     VkRenderingInfo rendering{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    rendering.renderArea = {{0, 0}, {width, rows}};
+    rendering.renderArea = area;
     rendering.layerCount = 1;
     rendering.colorAttachmentCount = static_cast<uint32_t>(attachments.size());
     rendering.pColorAttachments = attachments.data();
     vkCmdBeginRendering(cmd, &rendering);
-    const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &rendering.renderArea);
+    vkCmdSetScissor(cmd, 0, 1, &area);
+}
+
+void beginPoints(VkCommandBuffer cmd, std::span<gpu::Image* const> targets, uint32_t rows,
+                 const gpu::PipelineLayout& layout) {
+    const uint32_t width = targets.front()->width();
+    const uint32_t height = targets.front()->height();
+    beginTargets(cmd, targets, {{0, 0}, {width, rows}}, {0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f}, {});
     const shader::R2vbTargetConstants constants{glm::uvec4(width, height, 0u, 0u)};
     vkCmdPushConstants(cmd, layout.handle(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof constants, &constants);
 }

@@ -14,21 +14,23 @@
 
 #include <vulkan/vulkan.h>
 
-#include <functional>
 #include <span>
 #include <string>
 #include <vector>
 
 namespace tessera::backends::r2vb {
 
-/// Pushes the frame, terrain and height-map bindings plus `extra` for a layout.
-using PushBindings = std::function<void(const gpu::PipelineLayout&, std::span<const VkWriteDescriptorSet>)>;
-
 /// A pipeline that renders one-pixel points into colour targets of
 /// `colorFormats`: no depth, no culling, viewport and scissor set by beginPoints.
 gpu::GraphicsPipelineDesc pointPipeline(const std::string& name, const gpu::PipelineLayout& layout,
                                         std::span<const uint32_t> vertexSpirv, std::span<const uint32_t> fragmentSpirv,
                                         std::vector<VkFormat> colorFormats);
+
+/// Begins rendering into `targets` (COLOR_ATTACHMENT_OPTIMAL, all at least
+/// `area` large), clearing them to `clear` inside `area`, the render area
+/// and scissor, with `viewport`.
+void beginTargets(VkCommandBuffer cmd, std::span<gpu::Image* const> targets, const VkRect2D& area,
+                  const VkViewport& viewport, VkClearColorValue clear);
 
 /// Begins rendering into `targets` (all the same size, COLOR_ATTACHMENT_OPTIMAL),
 /// clearing their first `rows` rows to zero and rendering only those. The

@@ -18,8 +18,7 @@ constexpr uint32_t kOuterTarget = 0, kInnerTarget = 1, kFirstCommandTarget = 2;
 
 R2vbSubdivCommandPass::R2vbSubdivCommandPass(gpu::Device& device) {
     const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
-    std::vector<gpu::BindingDesc> bindings = GpuSubdiv::evalBindings(vertex);
-    bindings.push_back({TS_BINDING_SUBDIV_SUPPORT, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex});
+    std::vector<gpu::BindingDesc> bindings = GpuSubdiv::levelBindings(vertex);
     bindings.push_back({TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex});
     mLayout = gpu::PipelineLayout(device, bindings, sizeof(shader::R2vbTargetConstants), vertex,
                                   "r2vb.subdivCommands.layout");
@@ -52,10 +51,8 @@ EmulatedDrawSource R2vbSubdivCommandPass::record(gpu::FrameContext& frame, GpuSu
         // zero commands, which draw nothing.
         r2vb::beginPoints(cmd, attachments, targets.recordRows(), mLayout);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
-        std::vector<VkWriteDescriptorSet> writes = surface.evalWrites(uniforms);
-        const VkBufferView support = surface.supportView();
+        std::vector<VkWriteDescriptorSet> writes = surface.levelWrites(uniforms);
         const VkDescriptorBufferInfo keys{keyTable.handle(), 0, VK_WHOLE_SIZE};
-        writes.push_back(texelWrite(TS_BINDING_SUBDIV_SUPPORT, &support));
         writes.push_back(bufferWrite(TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &keys));
         frame.device().fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0,
                                                  uint32_t(writes.size()), writes.data());

@@ -41,11 +41,8 @@ void copyTexels(VkCommandBuffer cmd, const gpu::Image& image, uint32_t count, co
 
 R2vbSubdivRefinePass::R2vbSubdivRefinePass(gpu::Device& device) {
     const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_SUBDIV_STENCILS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex},
-                                   {TS_BINDING_SUBDIV_ENTRIES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex},
-                                   {TS_BINDING_SUBDIV_CAGE, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex}},
-                                  sizeof(shader::R2vbTargetConstants), vertex, "r2vb.subdivRefine.layout");
+    mLayout = gpu::PipelineLayout(device, GpuSubdiv::refineBindings(vertex), sizeof(shader::R2vbTargetConstants),
+                                  vertex, "r2vb.subdivRefine.layout");
     // The pixel shader only writes the vec4 its point carries: the cage
     // pass's does exactly that.
     gpu::GraphicsPipelineDesc desc = r2vb::pointPipeline("r2vb.subdivRefine", mLayout, r2vb_subdiv_refine_vert_spv,
@@ -66,13 +63,9 @@ void R2vbSubdivRefinePass::record(gpu::FrameContext& frame, GpuSubdiv& surface, 
         gpu::Image* const attachments[1] = {&image};
         r2vb::beginPoints(cmd, attachments, targets.pointRows(), mLayout);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
-        const VkBufferView stencils = surface.stencilsView(), entries = surface.entriesView();
-        const VkBufferView cage = surface.cageView(frame.slot());
-        const VkWriteDescriptorSet writes[3] = {texelWrite(TS_BINDING_SUBDIV_STENCILS, &stencils),
-                                                texelWrite(TS_BINDING_SUBDIV_ENTRIES, &entries),
-                                                texelWrite(TS_BINDING_SUBDIV_CAGE, &cage)};
-        frame.device().fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0, 3,
-                                                 writes);
+        const std::vector<VkWriteDescriptorSet> writes = surface.refineWrites(frame.slot());
+        frame.device().fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0,
+                                                 uint32_t(writes.size()), writes.data());
         vkCmdDraw(cmd, surface.refinedPointCount(), 1, 0, 0);
         vkCmdEndRendering(cmd);
     }

@@ -1,7 +1,7 @@
 #pragma once
 /// @file R2vbSubdivTargets.h
 /// r2vb's per-surface render targets and buffers for a subdivision surface,
-/// attached to the surface (GpuSubdiv::Extension):
+/// attached to the surface (its TechniqueExtension):
 ///   points   RGBA32F, pointsWidth() wide: texel i = refined point i (2D, as
 ///            a D3D9 render target must be), copied into the surface's
 ///            refined points (the R2VB step);
@@ -13,6 +13,7 @@
 
 #include "common/EmulatedDrawSource.h"
 #include "common/GpuSubdiv.h"
+#include "common/TechniqueExtension.h"
 #include "shaders/R2vbLayout.h"
 #include "tessera/core/Result.h"
 #include "tessera/gpu/Buffer.h"
@@ -26,7 +27,7 @@
 
 namespace tessera::backends {
 
-class R2vbSubdivTargets final : public GpuSubdiv::Extension {
+class R2vbSubdivTargets final : public TechniqueExtension {
 public:
     /// Targets for `surface`, named "r2vb.subdiv.<surface>.*". Fails,
     /// naming the surface and the limit, when a target would exceed the

@@ -17,21 +17,22 @@
 // streams the survivors out while rasterising their LOD state into a render
 // target, successive stream-out passes sort them into the tier lists, and
 // stream queries copied on the GPU give the indirect draws their counts
-// (crowd.cull, crowd.bin, crowd.slots, crowd.skin; StreamoutCrowdRenderer.h).
+// (crowd.cull, crowd.bin, crowd.slots, crowd.skin; StreamoutCrowdPasses.h),
+// and EmulatedTerrainBackend draws the tiers.
+#include "common/BackendPlugin.h"
 #include "common/EmulatedTerrainBackend.h"
 
 #include "tessera/gpu/Barriers.h"
 #include "StreamoutBuffers.h"
 #include "StreamoutCagePass.h"
 #include "StreamoutCharacterSkinPass.h"
-#include "StreamoutCrowdRenderer.h"
+#include "StreamoutCrowdPasses.h"
 #include "StreamoutCullPass.h"
 #include "StreamoutFactorPass.h"
 #include "StreamoutRecording.h"
 #include "StreamoutSubdivBuffers.h"
 #include "StreamoutSubdivFactorPass.h"
 #include "StreamoutSubdivRefinePass.h"
-#include "tessera/backend/PluginApi.h"
 
 #include <memory>
 
@@ -39,8 +40,8 @@ namespace tessera::backends {
 namespace {
 
 class StreamoutBackend final : public EmulatedTerrainBackend {
-public:
-    backend::BackendCapabilities capabilities(const device::DeviceFeatures* device) override {
+protected:
+    backend::BackendCapabilities describeCapabilities() const override {
         backend::BackendCapabilities caps;
         caps.name = "streamout";
         caps.description = "D3D10-style: transform feedback, geometry-shader culling, draw-auto, emulated tessellator";
@@ -51,12 +52,10 @@ public:
         caps.terrainModes = 0b111;
         caps.crowd = true;
         caps.subdiv = true;
-        checkRequirements(device, caps);
         return caps;
     }
 
-protected:
-    Status initializeFactorPasses(const backend::BackendInitInfo& info) override {
+    Status initializeFactorPasses(const backend::BackendInitInfo&) override {
         if (Status limits = StreamoutFactorPass::checkDevice(*mDevice); !limits) return limits;
         mBuffers = StreamoutBuffers(*mDevice);
         mCagePass = StreamoutCagePass(*mDevice);
@@ -65,13 +64,12 @@ protected:
         mCharacterSkin = StreamoutCharacterSkinPass(*mDevice);
         mSubdivRefine = StreamoutSubdivRefinePass(*mDevice);
         mSubdivFactors = StreamoutSubdivFactorPass(*mDevice);
-        mCrowds = std::make_unique<StreamoutCrowdRenderer>(*mDevice, static_cast<VkFormat>(info.colorFormat),
-                                                           static_cast<VkFormat>(info.depthFormat));
+        mCrowdPasses = std::make_unique<StreamoutCrowdPasses>(*mDevice);
         return {};
     }
 
     void shutdownFactorPasses() override {
-        mCrowds.reset();
+        mCrowdPasses.reset();
         mSubdivFactors = {};
         mSubdivRefine = {};
         mCharacterSkin = {};
@@ -84,11 +82,7 @@ protected:
     EmulatedDrawSource recordFactorPasses(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw,
                                           const gpu::UniformSlice& tessUniforms) override {
         StreamoutBuffers::Slot& buffers = mBuffers.prepare(mFrame->slot(), terrain.patchesPerSide());
-        const StreamoutPassInputs in{
-            *mFrame, terrain, buffers, tessUniforms,
-            [this, &terrain](const gpu::PipelineLayout& layout, std::span<const VkWriteDescriptorSet> extra) {
-                pushTerrainDescriptors(VK_PIPELINE_BIND_POINT_GRAPHICS, layout, terrain, extra);
-            }};
+        const StreamoutPassInputs in{*mFrame, terrain, buffers, tessUniforms, terrainPush(terrain)};
         // A terrain drawn earlier in this frame may still be reading these
         // buffers (its emulated draw, its passes): finish that before they
         // are cleared and streamed into again.
@@ -133,40 +127,26 @@ protected:
         return mSubdivFactors.record(*mFrame, surface, uniforms, emuKeyTable());
     }
 
-public:
-    Result<backend::CrowdHandle> createCrowd(const backend::CrowdDesc& desc) override {
-        if (!mCrowds) return Error{"createCrowd before initialize"};
-        return mCrowds->create(desc, [this](backend::CharacterHandle h) { return findCharacter(h); });
+    // Instanced crowds: lists, commands and near slots are captured by
+    // transform feedback; the LOD state targets, queries and survivors are
+    // each crowd's own (StreamoutCrowdResources).
+    VkBufferUsageFlags crowdWriteUsage() const override { return VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT; }
+
+    Status attachCrowdResources(GpuCrowd& crowd, backend::CrowdHandle) override {
+        auto resources = mCrowdPasses->createResources(crowd);
+        if (!resources) return resources.error();
+        crowd.attach(std::move(resources.value()));
+        return {};
     }
 
-    void destroyCrowd(backend::CrowdHandle handle) override {
-        if (mCrowds) mCrowds->destroy(handle);
+    void recordCrowdPasses(GpuCrowd& crowd, const CrowdFrame& frame) override {
+        mCrowdPasses->record(*mFrame, crowd, crowd.extensionAs<StreamoutCrowdResources>(), frame.uniforms);
     }
 
-    void drawCrowd(backend::CrowdHandle handle, const backend::CrowdDrawInfo& draw) override {
-        GpuCrowd* crowd = mCrowds ? mCrowds->find(handle) : nullptr;
-        if (!crowd) return;
-        const uint32_t slot = mFrame->slot();
-        GpuCrowdSet::reportCounts(*crowd, slot, mReport);
-        const uint32_t count = crowd->uploadInstances(slot, draw.instances);
-        const gpu::UniformSlice uniforms = mFrame->pushUniform(crowd->uniforms(draw, count));
-        suspendMainPass();
-        mCrowds->recordPasses(*mFrame, handle, uniforms);
-        GpuCrowdSet::recordCountsCopy(mFrame->cmd(), *crowd, slot);
-        ensureMainPass();
-        mCrowds->recordDraws(*mFrame, *crowd, mFrameUniforms, uniforms);
-        mReport.passes += StreamoutCrowdRenderer::kPasses;
-        mReport.intermediateBytes += mCrowds->bytes(handle);
-        mReport.crowdBytes += mCrowds->bytes(handle);
-    }
-
-    Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle handle) override {
-        if (!mCrowds) return Error{"readCrowdTiers: no such crowd"};
-        return mCrowds->readTiers(handle);
-    }
+    uint32_t crowdPassCount() const override { return StreamoutCrowdPasses::kPasses + TS_LOD_TIERS; }
 
 private:
-    std::unique_ptr<StreamoutCrowdRenderer> mCrowds;
+    std::unique_ptr<StreamoutCrowdPasses> mCrowdPasses;
     StreamoutBuffers mBuffers;
     StreamoutCagePass mCagePass;
     StreamoutCullPass mCullPass;
@@ -176,12 +156,9 @@ private:
     StreamoutSubdivFactorPass mSubdivFactors;
 };
 
-backend::Backend* create() { return new StreamoutBackend(); }
-void destroy(backend::Backend* b) { delete b; }
-
 } // namespace
 } // namespace tessera::backends
 
 TESSERA_REGISTER_PLUGIN(registry) {
-    registry.registerBackend({"streamout", &tessera::backends::create, &tessera::backends::destroy});
+    registry.registerBackend(tessera::backends::backendPlugin<tessera::backends::StreamoutBackend>("streamout"));
 }

@@ -20,10 +20,7 @@ StreamoutBuffers::Slot& StreamoutBuffers::prepare(uint32_t slot, uint32_t patche
         buffers.gridVertices < (patchesPerSide + 1) * (patchesPerSide + 1)) {
         // A draw of another terrain earlier in this frame may still read the
         // old buffers: free them once the frame retires.
-        if (buffers.cage.valid()) {
-            auto retired = std::make_shared<Slot>(std::move(buffers));
-            mDevice->deferDestroy([retired]() mutable { retired.reset(); });
-        }
+        if (buffers.cage.valid()) mDevice->deferRelease(std::move(buffers));
         buffers = Slot{};
         create(buffers, slot, patchesPerSide);
     }

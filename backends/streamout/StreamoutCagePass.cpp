@@ -1,5 +1,6 @@
 #include "StreamoutCagePass.h"
 
+#include "common/TerrainBindings.h"
 #include "tessera/gpu/Barriers.h"
 
 #include "tessera/shaders/FrameUniforms.h"
@@ -13,14 +14,7 @@ namespace tessera::backends {
 
 StreamoutCagePass::StreamoutCagePass(gpu::Device& device) {
     const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex}},
+    mLayout = terrainLayout(device, vertex, {{TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex}},
                                   0, 0, "streamout.cage.layout");
     gpu::GraphicsPipelineDesc desc = streamout::streamOutPipelineDesc(
         "streamout.cage", mLayout, {{VK_SHADER_STAGE_VERTEX_BIT, streamout_cage_vert_spv}});
@@ -40,7 +34,7 @@ void StreamoutCagePass::record(const StreamoutPassInputs& in) {
     const VkDescriptorBufferInfo tess = in.tessUniforms.descriptor();
     const VkWriteDescriptorSet writes[1] = {
         bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess)};
-    in.pushBindings(mLayout, writes);
+    in.pushBindings(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, writes);
     const VkBuffer cage = buffers.cage.handle();
     const VkDeviceSize offset = 0;
     const VkDeviceSize size = VkDeviceSize(gridVertices) * 4 * sizeof(float); // RGBA32F texels

@@ -17,12 +17,7 @@ StreamoutCharacterSkinPass::StreamoutCharacterSkinPass(gpu::Device& device) {
                               "streamout.characterSkin.layout");
     gpu::GraphicsPipelineDesc desc = streamout::streamOutPipelineDesc(
         "streamout.characterSkin", mLayout, {{VK_SHADER_STAGE_VERTEX_BIT, streamout_character_skin_vert_spv}});
-    desc.vertexBindings = {{0, sizeof(shader::CharacterVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
-    desc.vertexAttributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, positionU)},
-                             {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, normalV)},
-                             {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, tangent)},
-                             {3, 0, VK_FORMAT_R32G32B32A32_UINT, offsetof(shader::CharacterVertex, joints)},
-                             {4, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(shader::CharacterVertex, weights)}};
+    GpuCharacter::useCageVertexStream(desc);
     mPipeline = gpu::Pipeline(device, desc);
 }
 

@@ -25,7 +25,6 @@ Result<std::unique_ptr<StreamoutCrowdResources>> StreamoutCrowdResources::create
                      " render target, more than this device's maxImageDimension2D (" + std::to_string(limit) + ")"};
 
     std::unique_ptr<StreamoutCrowdResources> r(new StreamoutCrowdResources());
-    r->mDevice = &device;
     // Every id starts out of view: its first frame in view takes its tier at
     // once, without a fade.
     const std::vector<uint32_t> none(size_t(width) * height, shader::tsLodStateNone());
@@ -51,8 +50,9 @@ Result<std::unique_ptr<StreamoutCrowdResources>> StreamoutCrowdResources::create
     VkQueryPoolCreateInfo pool{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     pool.queryType = VK_QUERY_TYPE_TRANSFORM_FEEDBACK_STREAM_EXT;
     pool.queryCount = r->mQueryCount;
-    TESSERA_VK_CHECK(vkCreateQueryPool(device.handle(), &pool, nullptr, &r->mQueries));
-    device.setName(VK_OBJECT_TYPE_QUERY_POOL, r->mQueries, "streamout.crowd.listQueries");
+    VkQueryPool queries = VK_NULL_HANDLE;
+    TESSERA_VK_CHECK(vkCreateQueryPool(device.handle(), &pool, nullptr, &queries));
+    r->mQueries = {device, queries, "streamout.crowd.listQueries"};
     r->mCounts = gpu::Buffer(device, r->mQueryCount * kResultBytes,
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                              gpu::MemoryUsage::GpuOnly, "streamout.crowd.listCounts");
@@ -85,15 +85,8 @@ Result<std::unique_ptr<StreamoutCrowdResources>> StreamoutCrowdResources::create
     return r;
 }
 
-StreamoutCrowdResources::~StreamoutCrowdResources() {
-    if (mQueries) {
-        mDevice->clearName(VK_OBJECT_TYPE_QUERY_POOL, mQueries);
-        vkDestroyQueryPool(mDevice->handle(), mQueries, nullptr);
-    }
-}
-
 void StreamoutCrowdResources::copyResults(VkCommandBuffer cmd, uint32_t first, uint32_t count) {
-    vkCmdCopyQueryPoolResults(cmd, mQueries, first, count, mCounts.handle(), resultOffset(first), kResultBytes,
+    vkCmdCopyQueryPoolResults(cmd, mQueries.get(), first, count, mCounts.handle(), resultOffset(first), kResultBytes,
                               VK_QUERY_RESULT_WAIT_BIT);
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                        VK_ACCESS_2_TRANSFER_READ_BIT);

@@ -1,7 +1,8 @@
 #pragma once
 /// @file StreamoutCrowdResources.h
 /// What streamout's crowd culling and binning keep per crowd, beside the
-/// shared GpuCrowd (whose lists, commands and near slots they write):
+/// shared GpuCrowd (whose lists, commands and near slots they write), as
+/// the crowd's TechniqueExtension:
 ///  - the LOD state as two R32UI render targets, one texel per instance id,
 ///    read (Texture2D.Load) and written (a point per survivor) in turns:
 ///    each frame's cull pass loads last frame's target and rasterises into
@@ -27,11 +28,13 @@
 /// each drawCrowd starts with a barrier on the previous one's reads.
 
 #include "common/GpuCrowd.h"
+#include "common/TechniqueExtension.h"
 #include "tessera/core/Result.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/BufferView.h"
 #include "tessera/gpu/Device.h"
 #include "tessera/gpu/Image.h"
+#include "tessera/gpu/UniqueHandle.h"
 
 #include <array>
 #include <cstdint>
@@ -41,7 +44,7 @@
 
 namespace tessera::backends {
 
-class StreamoutCrowdResources {
+class StreamoutCrowdResources final : public TechniqueExtension {
 public:
     /// Query (and result) of list (tier, creature), and of a creature's survivors.
     uint32_t listQuery(uint32_t tier, uint32_t creature) const { return tier * mCreatures + creature; }
@@ -56,9 +59,6 @@ public:
 
     /// Fails, in words, when the crowd's ids do not fit a state target.
     static Result<std::unique_ptr<StreamoutCrowdResources>> create(gpu::Device& device, GpuCrowd& crowd);
-    ~StreamoutCrowdResources();
-    StreamoutCrowdResources(const StreamoutCrowdResources&) = delete;
-    StreamoutCrowdResources& operator=(const StreamoutCrowdResources&) = delete;
 
     /// Last frame's state (SHADER_READ_ONLY_OPTIMAL between frames) and the
     /// target this frame writes; flipState() swaps them once it has.
@@ -67,7 +67,7 @@ public:
     void flipState() { mRead = 1 - mRead; }
 
     gpu::Buffer& survivors() { return mSurvivors; }
-    VkQueryPool queries() const { return mQueries; }
+    VkQueryPool queries() const { return mQueries.get(); }
     uint32_t queryCount() const { return mQueryCount; }
     gpu::Buffer& counts() { return mCounts; }
     gpu::Buffer& draws() { return mDraws; }
@@ -82,7 +82,7 @@ public:
     static VkDeviceSize resultOffset(uint32_t query) { return query * kResultBytes; }
 
     /// Device bytes of everything above.
-    uint64_t bytes() const;
+    uint64_t bytes() const override;
 
 private:
     StreamoutCrowdResources() = default;
@@ -90,13 +90,12 @@ private:
         return VkDeviceSize(pass * mCreatures + creature) * sizeof(VkDrawIndirectCommand);
     }
 
-    gpu::Device* mDevice = nullptr;
     std::array<gpu::Image, 2> mState;
     uint32_t mRead = 0;
     uint32_t mCreatures = 0;
     gpu::Buffer mSurvivors, mCounts, mDraws, mCages;
     gpu::BufferView mCagesView;
-    VkQueryPool mQueries = VK_NULL_HANDLE;
+    gpu::UniqueHandle<VkQueryPool, VK_OBJECT_TYPE_QUERY_POOL> mQueries;
     uint32_t mQueryCount = 0;
     std::vector<uint32_t> mCageBase;
 };

@@ -1,5 +1,6 @@
 #include "StreamoutCullPass.h"
 
+#include "common/TerrainBindings.h"
 #include "tessera/gpu/Barriers.h"
 
 #include "tessera/shaders/FrameUniforms.h"
@@ -14,14 +15,7 @@ namespace tessera::backends {
 
 StreamoutCullPass::StreamoutCullPass(gpu::Device& device) {
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
-                                   {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
-                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
-                                   {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
-                                   {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
-                                   {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
-                                   {SO_BINDING_CAGE, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, stages}},
+    mLayout = terrainLayout(device, stages, {{SO_BINDING_CAGE, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, stages}},
                                   0, 0, "streamout.cull.layout");
     gpu::GraphicsPipelineDesc desc =
         streamout::streamOutPipelineDesc("streamout.cull", mLayout,
@@ -43,7 +37,7 @@ void StreamoutCullPass::record(const StreamoutPassInputs& in, std::span<const ui
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
     const VkBufferView cage = buffers.cageView.handle();
     const VkWriteDescriptorSet writes[1] = {texelWrite(SO_BINDING_CAGE, &cage)};
-    in.pushBindings(mLayout, writes);
+    in.pushBindings(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, writes);
     const VkBuffer patches = in.terrain.writeVisiblePatches(in.frame.slot(), visiblePatches).handle();
     const VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &patches, &zero);

@@ -1,5 +1,6 @@
 #include "StreamoutFactorPass.h"
 
+#include "common/TerrainBindings.h"
 #include "tessera/gpu/Barriers.h"
 
 #include "tessera/shaders/FrameUniforms.h"
@@ -44,19 +45,13 @@ Status StreamoutFactorPass::checkDevice(const gpu::Device& device) {
 
 StreamoutFactorPass::StreamoutFactorPass(gpu::Device& device) {
     const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vertex},
-                                   {TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vertex},
-                                   {TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vertex},
-                                   {TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
-                                   {SO_BINDING_CAGE, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex}},
-                                  0, 0, "streamout.factors.layout");
+    mLayout = terrainLayout(device, vertex,
+                            {{TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
+                             {TS_BINDING_EDGE_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vertex},
+                             {TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vertex},
+                             {TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex},
+                             {SO_BINDING_CAGE, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex}},
+                            0, 0, "streamout.factors.layout");
     gpu::GraphicsPipelineDesc desc = streamout::streamOutPipelineDesc(
         "streamout.factors", mLayout, {{VK_SHADER_STAGE_VERTEX_BIT, streamout_factors_vert_spv}});
     // The survivors' stream, one point per surviving patch.
@@ -92,7 +87,7 @@ void StreamoutFactorPass::record(const StreamoutPassInputs& in, const gpu::Buffe
         bufferWrite(TS_BINDING_PATCH_ERROR, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &patchErrors),
         bufferWrite(TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &keys),
         texelWrite(SO_BINDING_CAGE, &cage)};
-    in.pushBindings(mLayout, writes);
+    in.pushBindings(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, writes);
     const VkBuffer survivors = buffers.survivors.handle();
     const VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &survivors, &zero);

@@ -1,13 +1,14 @@
 #pragma once
 /// @file StreamoutSubdivBuffers.h
 /// streamout's per-surface buffers for a subdivision surface, attached to
-/// the surface (GpuSubdiv::Extension): the records and commands its factor
+/// the surface (its TechniqueExtension): the records and commands its factor
 /// pass streams out, one record per domain (EmulatedDrawSource.h). One set
 /// per surface, not per frame slot: each pass waits for the previous draw's
 /// reads with a barrier, as hulldomain's refine does on the refined points.
 
 #include "common/EmulatedDrawSource.h"
 #include "common/GpuSubdiv.h"
+#include "common/TechniqueExtension.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/BufferView.h"
 #include "tessera/gpu/Device.h"
@@ -16,7 +17,7 @@
 
 namespace tessera::backends {
 
-struct StreamoutSubdivBuffers final : GpuSubdiv::Extension {
+struct StreamoutSubdivBuffers final : TechniqueExtension {
     /// Buffers for `surface`'s domains, named "streamout.subdiv.<surface>.*".
     StreamoutSubdivBuffers(gpu::Device& device, const GpuSubdiv& surface);
 

@@ -20,8 +20,7 @@ constexpr VkDeviceSize kTexelBytes = 16;
 
 StreamoutSubdivFactorPass::StreamoutSubdivFactorPass(gpu::Device& device) {
     const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
-    std::vector<gpu::BindingDesc> bindings = GpuSubdiv::evalBindings(vertex);
-    bindings.push_back({TS_BINDING_SUBDIV_SUPPORT, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex});
+    std::vector<gpu::BindingDesc> bindings = GpuSubdiv::levelBindings(vertex);
     bindings.push_back({TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vertex});
     mLayout = gpu::PipelineLayout(device, bindings, 0, 0, "streamout.subdivFactors.layout");
     gpu::GraphicsPipelineDesc desc = streamout::streamOutPipelineDesc(
@@ -44,10 +43,8 @@ EmulatedDrawSource StreamoutSubdivFactorPass::record(gpu::FrameContext& frame, G
                        VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT);
     streamout::beginStreamOut(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
-    std::vector<VkWriteDescriptorSet> writes = surface.evalWrites(uniforms);
-    const VkBufferView support = surface.supportView();
+    std::vector<VkWriteDescriptorSet> writes = surface.levelWrites(uniforms);
     const VkDescriptorBufferInfo keys{keyTable.handle(), 0, VK_WHOLE_SIZE};
-    writes.push_back(texelWrite(TS_BINDING_SUBDIV_SUPPORT, &support));
     writes.push_back(bufferWrite(TS_BINDING_EMU_KEYS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &keys));
     fn.cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0, uint32_t(writes.size()),
                             writes.data());

@@ -17,11 +17,7 @@ constexpr VkPipelineStageFlags2 kPointReads =
 
 StreamoutSubdivRefinePass::StreamoutSubdivRefinePass(gpu::Device& device) {
     const VkShaderStageFlags vertex = VK_SHADER_STAGE_VERTEX_BIT;
-    mLayout = gpu::PipelineLayout(device,
-                                  {{TS_BINDING_SUBDIV_STENCILS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex},
-                                   {TS_BINDING_SUBDIV_ENTRIES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex},
-                                   {TS_BINDING_SUBDIV_CAGE, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, vertex}},
-                                  0, 0, "streamout.subdivRefine.layout");
+    mLayout = gpu::PipelineLayout(device, GpuSubdiv::refineBindings(vertex), 0, 0, "streamout.subdivRefine.layout");
     gpu::GraphicsPipelineDesc desc = streamout::streamOutPipelineDesc(
         "streamout.subdivRefine", mLayout, {{VK_SHADER_STAGE_VERTEX_BIT, streamout_subdiv_refine_vert_spv}});
     // No vertex stream: the vertex index is the refined point.
@@ -38,12 +34,9 @@ void StreamoutSubdivRefinePass::record(gpu::FrameContext& frame, GpuSubdiv& surf
                        VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT);
     streamout::beginStreamOut(cmd);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
-    const VkBufferView stencils = surface.stencilsView(), entries = surface.entriesView();
-    const VkBufferView cage = surface.cageView(frame.slot());
-    const VkWriteDescriptorSet writes[3] = {texelWrite(TS_BINDING_SUBDIV_STENCILS, &stencils),
-                                            texelWrite(TS_BINDING_SUBDIV_ENTRIES, &entries),
-                                            texelWrite(TS_BINDING_SUBDIV_CAGE, &cage)};
-    fn.cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0, 3, writes);
+    const std::vector<VkWriteDescriptorSet> writes = surface.refineWrites(frame.slot());
+    fn.cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0, uint32_t(writes.size()),
+                            writes.data());
     const VkBuffer points = surface.points().handle();
     const VkDeviceSize zero = 0;
     const VkDeviceSize size = surface.points().size();

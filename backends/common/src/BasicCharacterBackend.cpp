@@ -1,10 +1,10 @@
 #include "common/BasicCharacterBackend.h"
 
 #include "common/CommandHelpers.h"
+#include "common/CrowdTierCounts.h"
 #include "tessera/shaders/CrowdLod.h"
 #include "tessera/shaders/FrameUniforms.h"
 #include "tessera/character/CharacterAsset.h"
-#include "tessera/core/Log.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/tessellator/Tessellator.h"
 
@@ -33,27 +33,19 @@ gpu::PipelineLayout characterLayout(gpu::Device& device, CharacterBindings bindi
 Result<backend::CharacterHandle> BasicCharacterBackend::createCharacter(const backend::CharacterDesc& desc) {
     auto created = GpuCharacter::create(*mDevice, desc, compressedCageUsage());
     if (!created) return created.error();
-    mCharacters.push_back(std::move(created.value()));
-    return backend::CharacterHandle{static_cast<uint32_t>(mCharacters.size() - 1)};
-}
-
-GpuCharacter* BasicCharacterBackend::findCharacter(backend::CharacterHandle handle) {
-    if (!handle.valid() || handle.id >= mCharacters.size()) return nullptr;
-    return mCharacters[handle.id].get();
+    return mCharacters.add(*mDevice, std::move(created.value()), [this](GpuCharacter& character, auto) {
+        return attachCharacterResources(character);
+    });
 }
 
 void BasicCharacterBackend::destroyCharacter(backend::CharacterHandle handle) {
-    if (!findCharacter(handle)) return;
-    // A frame in flight may still read it; release after that frame.
-    auto* released = mCharacters[handle.id].release();
-    mDevice->deferDestroy([released] { delete released; });
+    if (mDevice) mCharacters.destroy(*mDevice, handle);
 }
 
-void BasicCharacterBackend::shutdown() {
-    if (mDevice) mDevice->waitIdle();
+void BasicCharacterBackend::releaseObjects() {
+    mCrowds.clear();
     mCharacters.clear();
-    mSubdivs.clear();
-    BasicTerrainBackend::shutdown();
+    BasicSubdivBackend::releaseObjects();
 }
 
 void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& draw) {
@@ -63,7 +55,7 @@ void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& dra
     // Instances of one character in this frame each need their own compressed cage.
     std::vector<uint32_t> seen(mCharacters.size(), 0);
     for (const backend::CharacterDrawItem& item : draw.items) {
-        GpuCharacter* character = findCharacter(item.character);
+        GpuCharacter* character = mCharacters.find(item.character);
         if (!character || item.palette.size() < character->paletteSize()) continue;
         CharacterInstance instance;
         instance.character = character;
@@ -121,51 +113,48 @@ void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& dra
     ++mReport.passes;
 }
 
-Result<backend::CrowdHandle> BasicCharacterBackend::createCrowd(const backend::CrowdDesc&) {
-    return fail("backend ", capabilities(nullptr).name,
-                " draws no instanced crowds (BackendCapabilities::crowd); draw the crowd with drawCharacters");
-}
-
-Result<backend::CrowdTiers> BasicCharacterBackend::readCrowdTiers(backend::CrowdHandle) {
-    return fail("backend ", capabilities(nullptr).name, " draws no instanced crowds");
-}
-
-Result<backend::SubdivHandle> BasicCharacterBackend::createSubdiv(const backend::SubdivDesc& desc) {
-    if (!capabilities(nullptr).subdiv)
+Result<backend::CrowdHandle> BasicCharacterBackend::createCrowd(const backend::CrowdDesc& desc) {
+    if (!capabilities(nullptr).crowd)
         return fail("backend ", capabilities(nullptr).name,
-                    " draws no subdivision surfaces (BackendCapabilities::subdiv)");
-    return mSubdivs.create(desc);
+                    " draws no instanced crowds (BackendCapabilities::crowd); draw the crowd with drawCharacters");
+    if (!mDevice) return fail("createCrowd before initialize");
+    auto created = GpuCrowd::create(
+        *mDevice, desc, [this](backend::CharacterHandle h) { return mCharacters.find(h); }, crowdWriteUsage());
+    if (!created) return created.error();
+    return mCrowds.add(*mDevice, std::move(created.value()), [this](GpuCrowd& crowd, backend::CrowdHandle handle) {
+        return attachCrowdResources(crowd, handle);
+    });
 }
 
-void BasicCharacterBackend::destroySubdiv(backend::SubdivHandle surface) {
-    mSubdivs.destroy(surface);
+void BasicCharacterBackend::destroyCrowd(backend::CrowdHandle handle) {
+    if (mDevice) mCrowds.destroy(*mDevice, handle);
 }
 
-void BasicCharacterBackend::updateSubdivTiles(backend::SubdivHandle surface, const backend::SubdivTileData& tiles,
-                                              std::span<const glm::uvec4> rects) {
-    GpuSubdiv* s = mSubdivs.find(surface);
-    if (!s || rects.empty()) return;
+void BasicCharacterBackend::drawCrowd(backend::CrowdHandle handle, const backend::CrowdDrawInfo& draw) {
+    GpuCrowd* crowd = mCrowds.find(handle);
+    if (!crowd) return;
+    CrowdFrame frame;
+    frame.slot = mFrame->slot();
+    // The counts this slot's previous frame wrote: its fence has signalled.
+    reportCrowdCounts(*crowd, frame.slot, mReport);
+    frame.instanceCount = crowd->uploadInstances(frame.slot, draw.instances);
+    frame.uniforms = mFrame->pushUniform(crowd->uniforms(draw, frame.instanceCount));
     suspendMainPass();
-    if (Status updated = s->updateTiles(*mFrame, tiles, rects); !updated)
-        log::error(updated.error().message);
-}
-
-void BasicCharacterBackend::drawSubdiv(backend::SubdivHandle surface, const backend::SubdivDrawInfo& draw) {
-    GpuSubdiv* s = mSubdivs.find(surface);
-    if (!s) return;
-    s->uploadCage(mFrame->slot(), draw.cage);
-    const gpu::UniformSlice uniforms = mFrame->pushUniform(draw.uniforms);
-    suspendMainPass();
-    subdivPrePasses(*s, uniforms);
+    recordCrowdPasses(*crowd, frame);
+    recordCrowdCountsCopy(mFrame->cmd(), *crowd, frame.slot);
     ensureMainPass();
-    subdivDraw(*s, uniforms);
-    mReport.subdivDomains += s->domainCount();
-    mReport.intermediateBytes += s->bytes();
-    mReport.passes += 2;
+    recordCrowdDraws(*crowd, frame);
+    const uint64_t bytes = crowd->bytes() + crowd->extensionBytes();
+    mReport.passes += crowdPassCount();
+    mReport.intermediateBytes += bytes;
+    mReport.crowdBytes += bytes;
 }
 
-Result<backend::SubdivPoints> BasicCharacterBackend::readSubdivPoints(backend::SubdivHandle surface) {
-    return mSubdivs.readPoints(surface);
+Result<backend::CrowdTiers> BasicCharacterBackend::readCrowdTiers(backend::CrowdHandle handle) {
+    if (!capabilities(nullptr).crowd) return fail("backend ", capabilities(nullptr).name, " draws no instanced crowds");
+    GpuCrowd* crowd = mCrowds.find(handle);
+    if (!crowd) return fail("readCrowdTiers: no such crowd");
+    return backends::readCrowdTiers(*mDevice, *crowd);
 }
 
 CharacterPushFn BasicCharacterBackend::characterPush() {

@@ -1,10 +1,12 @@
 #include "common/BasicTerrainBackend.h"
 
+#include "common/TerrainBindings.h"
 #include "tessera/shaders/TessFactors.h"
 
 #include "common/CommandHelpers.h"
 #include "common/FrameUniformsBuilder.h"
 #include "tessera/gpu/FrameContext.h"
+#include "tessera/gpu/Readback.h"
 #include "tessera/gpu/RenderTarget.h"
 
 #include "terrain_basic.frag.spv.h"
@@ -32,6 +34,12 @@ void BasicTerrainBackend::checkRequirements(const device::DeviceFeatures* device
                                "drawIndirectFirstInstance)");
 }
 
+backend::BackendCapabilities BasicTerrainBackend::capabilities(const device::DeviceFeatures* device) {
+    backend::BackendCapabilities caps = describeCapabilities();
+    checkRequirements(device, caps);
+    return caps;
+}
+
 Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
     if (!info.device) return fail("this backend needs a Vulkan device");
     auto caps = capabilities(&info.features);
@@ -42,17 +50,9 @@ Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
     }
     mDevice = info.device;
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    mLayout = gpu::PipelineLayout(*mDevice,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
-                                   {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
-                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
-                                   {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
-                                   {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
-                                   {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages}},
-                                  0, 0, caps.name + ".terrainLowres.layout");
+    mLayout = terrainLayout(*mDevice, stages, {}, 0, 0, caps.name + ".terrainLowres.layout");
 
     gpu::GraphicsPipelineDesc desc;
-    desc.name = caps.name + ".terrainLowres.fill";
     desc.layout = &mLayout;
     desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, terrain_basic_vert_spv}, {VK_SHADER_STAGE_FRAGMENT_BIT, terrain_basic_frag_spv}};
     // Binding 0: the patch quad (per vertex); binding 1: visible patch index
@@ -62,18 +62,13 @@ Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
     desc.cullMode = VK_CULL_MODE_NONE;
     desc.colorFormats = {static_cast<VkFormat>(info.colorFormat)};
     desc.depthFormat = static_cast<VkFormat>(info.depthFormat);
-    mFillPipeline = gpu::Pipeline(*mDevice, desc);
     mWireframeSupported = info.features.fillModeNonSolid;
+    mPipelines = FillWirePipelines(*mDevice, desc, caps.name + ".terrainLowres", mWireframeSupported);
     // Auto defers where it pays (docs/LOOKS.md, measured on the H200): the
     // compute resolve on a GPU costs a tenth of the terrain's fragment
     // shading; a fullscreen fragment resolve costs more than shading the
     // terrain's own fragments, and on a CPU rasterizer neither beats forward.
     mDeferOnAuto = !info.features.isCpu && terrainResolveMode() == TerrainResolvePass::Mode::Compute;
-    if (mWireframeSupported) {
-        desc.name = caps.name + ".terrainLowres.wireframe";
-        desc.polygonMode = VK_POLYGON_MODE_LINE;
-        mWirePipeline = gpu::Pipeline(*mDevice, desc);
-    }
     mSplatPass = TerrainSplatPass(*mDevice, caps.name);
     mSunPass = TerrainSunPass(*mDevice, caps.name);
     mShadowPass = CharacterShadowPass(*mDevice, caps.name);
@@ -86,37 +81,28 @@ Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
 
 void BasicTerrainBackend::shutdown() {
     if (mDevice) mDevice->waitIdle();
-    mTerrains.clear();
+    releaseObjects();
     shutdownTechnique();
     mSplatPass = {};
     mSunPass = {};
     mShadowPass = {};
     mSkyPass = {};
     mResolvePass = {};
-    mFillPipeline = {};
-    mWirePipeline = {};
+    mPipelines = {};
     mLayout = {};
     mDevice = nullptr;
 }
 
 Result<backend::TerrainHandle> BasicTerrainBackend::createTerrain(const backend::TerrainDesc& desc) {
     if (!desc.terrain) return fail("createTerrain: no terrain");
+    if (Status supported = checkTerrain(desc); !supported) return supported.error();
     auto created = GpuTerrain::create(*mDevice, *desc.terrain, desc.detailTextures);
     if (!created) return created.error();
-    mTerrains.push_back(std::move(created.value()));
-    return backend::TerrainHandle{static_cast<uint32_t>(mTerrains.size() - 1)};
-}
-
-GpuTerrain* BasicTerrainBackend::find(backend::TerrainHandle handle) {
-    if (!handle.valid() || handle.id >= mTerrains.size()) return nullptr;
-    return mTerrains[handle.id].get();
+    return mTerrains.add(std::move(created.value()));
 }
 
 void BasicTerrainBackend::destroyTerrain(backend::TerrainHandle handle) {
-    if (!find(handle)) return;
-    // The GPU may still read it in a frame in flight; release after that frame.
-    auto* released = mTerrains[handle.id].release();
-    mDevice->deferDestroy([released] { delete released; });
+    if (mDevice) mTerrains.destroy(*mDevice, handle);
 }
 
 void BasicTerrainBackend::beginFrame(const backend::FrameInfo& frame) {
@@ -134,10 +120,11 @@ void BasicTerrainBackend::beginFrame(const backend::FrameInfo& frame) {
     mMainPassOpen = false;
     mMainPassStarted = false;
     mResolveTerrain = nullptr;
+    beginTechniqueFrame();
 }
 
 void BasicTerrainBackend::splatTerrain(backend::TerrainHandle handle, std::span<const terrain::CraterSplat> splats) {
-    GpuTerrain* terrain = find(handle);
+    GpuTerrain* terrain = mTerrains.find(handle);
     if (!terrain || splats.empty()) return;
     // Splats render into the height map, so they must come before the main
     // pass (and before this frame's factor passes) reads it.
@@ -173,7 +160,7 @@ void BasicTerrainBackend::suspendMainPass() {
 }
 
 void BasicTerrainBackend::drawTerrain(backend::TerrainHandle handle, const backend::TerrainDrawInfo& draw) {
-    GpuTerrain* terrain = find(handle);
+    GpuTerrain* terrain = mTerrains.find(handle);
     if (!terrain) return;
     // The sun-visibility map renders into its own target: before the main
     // pass and the backend's own passes, after this frame's splats. Kept
@@ -222,6 +209,13 @@ void BasicTerrainBackend::pushTerrainDescriptors(VkPipelineBindPoint bindPoint, 
                                        writes.data());
 }
 
+PushTerrainBindings BasicTerrainBackend::terrainPush(GpuTerrain& terrain) {
+    return [this, &terrain](VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout,
+                            std::span<const VkWriteDescriptorSet> extra) {
+        pushTerrainDescriptors(bindPoint, layout, terrain, extra);
+    };
+}
+
 gpu::UniformSlice BasicTerrainBackend::pushTessUniforms(const GpuTerrain& terrain,
                                                        const terrain::TessellationSettings& settings, float maxLevel) {
     shader::TerrainTessUniforms tess{};
@@ -243,8 +237,7 @@ void BasicTerrainBackend::drawControlMesh(GpuTerrain& terrain, std::span<const u
     gpu::PassScope pass(*mFrame, passName);
     if (patches.empty()) return;
     VkCommandBuffer cmd = mFrame->cmd();
-    const bool wire = mFrameInfo.wireframe && mWirePipeline.valid();
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (wire ? mWirePipeline : mFillPipeline).handle());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines.get(mFrameInfo.wireframe).handle());
     pushTerrainDescriptors(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, terrain);
 
     gpu::Buffer& patchStream = terrain.writeVisiblePatches(mFrame->slot(), patches);
@@ -260,15 +253,13 @@ void BasicTerrainBackend::drawControlMesh(GpuTerrain& terrain, std::span<const u
 }
 
 Result<std::vector<uint16_t>> BasicTerrainBackend::readTerrainHeights(backend::TerrainHandle handle) {
-    GpuTerrain* terrain = find(handle);
+    GpuTerrain* terrain = mTerrains.find(handle);
     if (!terrain) return fail("readTerrainHeights: unknown terrain handle");
-    mDevice->waitIdle();
     gpu::Image& heights = terrain->heightMap();
     const size_t count = size_t(heights.width()) * heights.height();
-    gpu::Buffer readback(*mDevice, count * sizeof(uint16_t), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUsage::GpuToCpu,
-                         "terrain.heightReadback");
-    mDevice->submitImmediate(
-        [&](VkCommandBuffer cmd) {
+    const std::vector<std::byte> bytes = gpu::readBack(
+        *mDevice, count * sizeof(uint16_t), "terrain.heightReadback", "terrain.readHeights",
+        [&](VkCommandBuffer cmd, const gpu::Buffer& readback) {
             const VkImageAspectFlags color = VK_IMAGE_ASPECT_COLOR_BIT;
             gpu::transitionImage(cmd, heights.handle(), color, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
@@ -281,10 +272,9 @@ Result<std::vector<uint16_t>> BasicTerrainBackend::readTerrainHeights(backend::T
             gpu::transitionImage(cmd, heights.handle(), color, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT, 0,
                                  VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-        },
-        "terrain.readHeights");
+        });
     std::vector<uint16_t> samples(count);
-    std::memcpy(samples.data(), readback.mapped(), count * sizeof(uint16_t));
+    std::memcpy(samples.data(), bytes.data(), bytes.size());
     return samples;
 }
 
@@ -299,11 +289,7 @@ void BasicTerrainBackend::endFrame() {
     mFrame->target().endRendering(mFrame->cmd());
     mMainPassOpen = false;
     if (resolve) {
-        GpuTerrain& terrain = *mResolveTerrain;
-        mResolvePass.record(*mFrame, [&](VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout,
-                                         std::span<const VkWriteDescriptorSet> extra) {
-            pushTerrainDescriptors(bindPoint, layout, terrain, extra);
-        });
+        mResolvePass.record(*mFrame, terrainPush(*mResolveTerrain));
         ++mReport.passes;
     }
     mLastReport = mReport;

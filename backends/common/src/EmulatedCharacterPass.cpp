@@ -47,14 +47,8 @@ EmulatedCharacterPass::EmulatedCharacterPass(gpu::Device& device, const std::str
         desc.frontFace = VK_FRONT_FACE_CLOCKWISE;
         desc.colorFormats = {colorFormat};
         desc.depthFormat = depthFormat;
-        const std::string base = backendName + ".character." + (single ? "singlePass" : "twoPass");
-        desc.name = base + ".fill";
-        mPipelines[single][0] = gpu::Pipeline(device, desc);
-        if (wireframe) {
-            desc.name = base + ".wireframe";
-            desc.polygonMode = VK_POLYGON_MODE_LINE;
-            mPipelines[single][1] = gpu::Pipeline(device, desc);
-        }
+        mPipelines[single] = FillWirePipelines(
+            device, desc, backendName + ".character." + (single ? "singlePass" : "twoPass"), wireframe);
     }
 }
 
@@ -112,7 +106,7 @@ void EmulatedCharacterPass::record(gpu::FrameContext& frame, const CharacterInst
     GpuCharacter& c = *instance.character;
     const int single = path == backend::CharacterPath::SinglePass ? 1 : 0;
     const Placed pattern = place(frame.slot(), instance.level);
-    const gpu::Pipeline& pipeline = mPipelines[single][wireframe && mPipelines[single][1].valid() ? 1 : 0];
+    const gpu::Pipeline& pipeline = mPipelines[single].get(wireframe);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.handle());
     const VkBufferView cage = c.vertexTexels();
     const VkBufferView compressed = instance.compressed ? instance.compressed->view.handle() : cage;

@@ -38,15 +38,8 @@ EmulatedSubdivPass::EmulatedSubdivPass(gpu::Device& device, const std::string& b
     desc.depthFormat = depthFormat;
     for (int twoSided = 0; twoSided < 2; ++twoSided) {
         desc.cullMode = twoSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-        const std::string base = backendName + ".subdiv." + (twoSided ? "twoSided" : "closed");
-        desc.name = base + ".fill";
-        desc.polygonMode = VK_POLYGON_MODE_FILL;
-        mPipelines[twoSided][0] = gpu::Pipeline(device, desc);
-        if (wireframe) {
-            desc.name = base + ".wireframe";
-            desc.polygonMode = VK_POLYGON_MODE_LINE;
-            mPipelines[twoSided][1] = gpu::Pipeline(device, desc);
-        }
+        mPipelines[twoSided] =
+            FillWirePipelines(device, desc, backendName + ".subdiv." + (twoSided ? "twoSided" : "closed"), wireframe);
     }
 }
 
@@ -57,8 +50,7 @@ void EmulatedSubdivPass::record(gpu::FrameContext& frame, GpuSubdiv& surface, co
     if (source.records == VK_NULL_HANDLE || source.capacity == 0) return;
     VkCommandBuffer cmd = frame.cmd();
     const int twoSided = surface.closed() ? 0 : 1;
-    const int wire = wireframe && mPipelines[twoSided][1].valid() ? 1 : 0;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines[twoSided][wire].handle());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines[twoSided].get(wireframe).handle());
     std::vector<VkWriteDescriptorSet> writes = surface.evalWrites(uniforms);
     const VkDescriptorBufferInfo frameInfo = frameUniforms.descriptor();
     writes.push_back(bufferWrite(TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &frameInfo));

@@ -1,5 +1,7 @@
 #include "common/EmulatedTerrainBackend.h"
 
+#include "common/CommandHelpers.h"
+#include "common/TerrainBindings.h"
 #include "tessera/shaders/FrameUniforms.h"
 #include "tessera/shaders/TerrainUniforms.h"
 #include "tessera/shaders/TessPattern.h"
@@ -7,6 +9,8 @@
 #include "tessera/terrain/Terrain.h"
 #include "tessera/tessellator/PatternLibrary.h"
 
+#include "character.frag_crowd_texels.spv.h"
+#include "crowd_mesh.vert_texels.spv.h"
 #include "terrain_basic.frag.spv.h"
 #include "terrain_emulated.vert.spv.h"
 
@@ -30,18 +34,11 @@ Status EmulatedTerrainBackend::initializeTechnique(const backend::BackendInitInf
     mKeyTable.upload(std::span<const shader::TsEmuKeyTable>(&keys, 1));
 
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    mLayout = gpu::PipelineLayout(*mDevice,
-                                  {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
-                                   {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
-                                   {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
-                                   {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
-                                   {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
-                                   {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages},
-                                   {TS_BINDING_EMU_RECORDS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER,
-                                    VK_SHADER_STAGE_VERTEX_BIT}},
-                                  sizeof(uint32_t), VK_SHADER_STAGE_VERTEX_BIT, name + ".terrainEmulated.layout");
+    mLayout =
+        terrainLayout(*mDevice, stages,
+                      {{TS_BINDING_EMU_RECORDS, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, VK_SHADER_STAGE_VERTEX_BIT}},
+                      sizeof(uint32_t), VK_SHADER_STAGE_VERTEX_BIT, name + ".terrainEmulated.layout");
     gpu::GraphicsPipelineDesc desc;
-    desc.name = name + ".terrainEmulated.fill";
     desc.layout = &mLayout;
     desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, terrain_emulated_vert_spv},
                    {VK_SHADER_STAGE_FRAGMENT_BIT, terrain_basic_frag_spv}};
@@ -52,82 +49,74 @@ Status EmulatedTerrainBackend::initializeTechnique(const backend::BackendInitInf
     desc.cullMode = VK_CULL_MODE_NONE;
     desc.colorFormats = {static_cast<VkFormat>(info.colorFormat)};
     desc.depthFormat = static_cast<VkFormat>(info.depthFormat);
-    mFillPipeline = gpu::Pipeline(*mDevice, desc);
-    if (mWireframeSupported) {
-        desc.name = name + ".terrainEmulated.wireframe";
-        desc.polygonMode = VK_POLYGON_MODE_LINE;
-        mWirePipeline = gpu::Pipeline(*mDevice, desc);
-    }
-    mCharacterPass = EmulatedCharacterPass(*mDevice, name, static_cast<VkFormat>(info.colorFormat),
-                                           static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
+    mPipelines = FillWirePipelines(*mDevice, desc, name + ".terrainEmulated", mWireframeSupported);
+    const auto color = static_cast<VkFormat>(info.colorFormat);
+    const auto depth = static_cast<VkFormat>(info.depthFormat);
+    mCharacterPass = EmulatedCharacterPass(*mDevice, name, color, depth, mWireframeSupported);
     if (Status factors = initializeFactorPasses(info); !factors) return factors;
-    if (capabilities(nullptr).subdiv) {
-        mSubdivPass = EmulatedSubdivPass(*mDevice, name, static_cast<VkFormat>(info.colorFormat),
-                                         static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
-        // The backend's subdivWriteUsage is known now.
-        initializeSubdiv();
+    if (capabilities(nullptr).subdiv)
+        mSubdivPass = EmulatedSubdivPass(*mDevice, name, color, depth, mWireframeSupported);
+    if (capabilities(nullptr).crowd) {
+        mCrowdMesh = CrowdMeshPass(*mDevice, CrowdDescriptors::Mode::Texels, crowd_mesh_vert_texels_spv,
+                                   character_frag_crowd_texels_spv, color, depth, name + ".crowd.mesh");
+        mCrowdNear = EmulatedCrowdNearPass(*mDevice, color, depth, name);
     }
     return {};
 }
 
 void EmulatedTerrainBackend::shutdownTechnique() {
     shutdownFactorPasses();
+    mCrowdNear = {};
+    mCrowdMesh = {};
     mSubdivPass = {};
     mSubdivSource = {};
     mCharacterPass = {};
-    mFillPipeline = {};
-    mWirePipeline = {};
+    mPipelines = {};
     mLayout = {};
     mKeyTable = {};
     mPatternVertices = {};
 }
 
-Result<backend::TerrainHandle> EmulatedTerrainBackend::createTerrain(const backend::TerrainDesc& desc) {
-    if (desc.terrain) {
-        const uint64_t texels = 2ull * desc.terrain->grid().patchCount();
-        const uint32_t limit = mDevice->properties().limits.maxTexelBufferElements;
-        if (texels > limit)
-            return fail("backend ", capabilities(nullptr).name, ": a terrain of ",
-                        std::to_string(desc.terrain->grid().patchCount()), " patches needs ", std::to_string(texels),
-                        " record texels, more than this device's maxTexelBufferElements (", std::to_string(limit), ")");
-    }
-    return BasicTerrainBackend::createTerrain(desc);
+Status EmulatedTerrainBackend::checkTerrain(const backend::TerrainDesc& desc) {
+    const uint64_t texels = 2ull * desc.terrain->grid().patchCount();
+    const uint32_t limit = mDevice->properties().limits.maxTexelBufferElements;
+    if (texels > limit)
+        return fail("backend ", capabilities(nullptr).name, ": a terrain of ",
+                    std::to_string(desc.terrain->grid().patchCount()), " patches needs ", std::to_string(texels),
+                    " record texels, more than this device's maxTexelBufferElements (", std::to_string(limit), ")");
+    return {};
 }
 
-Result<backend::SubdivHandle> EmulatedTerrainBackend::createSubdiv(const backend::SubdivDesc& desc) {
-    if (desc.mesh) {
-        const uint64_t texels = 2ull * desc.mesh->domainCount();
-        const uint32_t limit = mDevice->properties().limits.maxTexelBufferElements;
-        if (texels > limit)
-            return fail("createSubdiv: ", desc.mesh->name, " has ", std::to_string(desc.mesh->domainCount()),
-                        " domains, whose records need ", std::to_string(texels),
-                        " texels, more than this device's maxTexelBufferElements (", std::to_string(limit), ")");
-    }
-    Result<backend::SubdivHandle> handle = BasicCharacterBackend::createSubdiv(desc);
-    if (!handle) return handle;
-    if (Status attached = attachSubdivResources(*findSubdiv(handle.value())); !attached) {
-        destroySubdiv(handle.value());
-        return attached.error();
-    }
-    return handle;
+Status EmulatedTerrainBackend::checkSubdiv(const backend::SubdivDesc& desc) {
+    if (!desc.mesh) return {};
+    const uint64_t texels = 2ull * desc.mesh->domainCount();
+    const uint32_t limit = mDevice->properties().limits.maxTexelBufferElements;
+    if (texels > limit)
+        return fail("createSubdiv: ", desc.mesh->name, " has ", std::to_string(desc.mesh->domainCount()),
+                    " domains, whose records need ", std::to_string(texels),
+                    " texels, more than this device's maxTexelBufferElements (", std::to_string(limit), ")");
+    return {};
 }
 
-void EmulatedTerrainBackend::subdivPrePasses(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) {
+void EmulatedTerrainBackend::recordSubdivPasses(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) {
     recordSubdivRefine(surface);
     mSubdivSource = recordSubdivFactorPasses(surface, uniforms);
-    if (const GpuSubdiv::Extension* extension = surface.extension())
-        mReport.intermediateBytes += extension->bytes();
 }
 
-void EmulatedTerrainBackend::subdivDraw(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) {
+void EmulatedTerrainBackend::recordSubdivDraw(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) {
     mSubdivPass.record(*mFrame, surface, mSubdivSource, mPatternVertices, mFrameUniforms, uniforms,
                        mFrameInfo.wireframe);
     mSubdivSource = {};
 }
 
-void EmulatedTerrainBackend::beginFrame(const backend::FrameInfo& frame) {
-    BasicCharacterBackend::beginFrame(frame);
+void EmulatedTerrainBackend::beginTechniqueFrame() {
     mCharacterPass.beginFrame(mFrame->slot());
+}
+
+void EmulatedTerrainBackend::recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame& frame) {
+    CrowdDescriptors descriptors(CrowdDescriptors::Mode::Texels, crowd, frame.slot, mFrameUniforms, frame.uniforms);
+    mCrowdNear.record(*mFrame, crowd, descriptors);
+    mCrowdMesh.record(*mFrame, crowd, descriptors);
 }
 
 void EmulatedTerrainBackend::drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) {
@@ -153,13 +142,8 @@ void EmulatedTerrainBackend::drawTessellated(GpuTerrain& terrain, const backend:
     gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");
     if (draw.visiblePatches.empty() || source.records == VK_NULL_HANDLE) return;
     VkCommandBuffer cmd = mFrame->cmd();
-    const bool wire = mFrameInfo.wireframe && mWirePipeline.valid();
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, (wire ? mWirePipeline : mFillPipeline).handle());
-    VkWriteDescriptorSet records{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    records.dstBinding = TS_BINDING_EMU_RECORDS;
-    records.descriptorCount = 1;
-    records.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-    records.pTexelBufferView = &source.records;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines.get(mFrameInfo.wireframe).handle());
+    const VkWriteDescriptorSet records = texelWrite(TS_BINDING_EMU_RECORDS, &source.records);
     pushTerrainDescriptors(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, terrain, {&records, 1});
     vkCmdPushConstants(cmd, mLayout.handle(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(uint32_t), &source.capacity);
     const VkBuffer patterns = mPatternVertices.handle();

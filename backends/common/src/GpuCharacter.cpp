@@ -3,6 +3,7 @@
 #include "tessera/character/CharacterAsset.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -193,6 +194,17 @@ shader::CharacterUniforms GpuCharacter::uniforms(const glm::mat4& world, float l
     u.counts = glm::uvec4(mVertexCount, mPaletteSize, 256u, mNegativeHandedness ? 1u : 0u);
     u.lod = lod;
     return u;
+}
+
+void GpuCharacter::useCageVertexStream(gpu::GraphicsPipelineDesc& desc) {
+    using shader::CharacterVertex;
+    constexpr VkFormat kFloat4 = VK_FORMAT_R32G32B32A32_SFLOAT;
+    desc.vertexBindings = {{0, sizeof(CharacterVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+    desc.vertexAttributes = {{0, 0, kFloat4, offsetof(CharacterVertex, positionU)},
+                             {1, 0, kFloat4, offsetof(CharacterVertex, normalV)},
+                             {2, 0, kFloat4, offsetof(CharacterVertex, tangent)},
+                             {3, 0, VK_FORMAT_R32G32B32A32_UINT, offsetof(CharacterVertex, joints)},
+                             {4, 0, kFloat4, offsetof(CharacterVertex, weights)}};
 }
 
 } // namespace tessera::backends

@@ -2,6 +2,7 @@
 
 #include "common/CommandHelpers.h"
 #include "tessera/gpu/Barriers.h"
+#include "tessera/gpu/Readback.h"
 #include "tessera/backend/SubdivChecks.h"
 
 #include <algorithm>
@@ -135,6 +136,33 @@ std::vector<VkWriteDescriptorSet> GpuSubdiv::evalWrites(const gpu::UniformSlice&
     return writes;
 }
 
+std::vector<gpu::BindingDesc> GpuSubdiv::levelBindings(VkShaderStageFlags stages) {
+    std::vector<gpu::BindingDesc> bindings = evalBindings(stages);
+    bindings.push_back({TS_BINDING_SUBDIV_SUPPORT, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, stages});
+    return bindings;
+}
+
+std::vector<VkWriteDescriptorSet> GpuSubdiv::levelWrites(const gpu::UniformSlice& uniforms) {
+    std::vector<VkWriteDescriptorSet> writes = evalWrites(uniforms);
+    mSupportHandle = mSupportView.handle();
+    writes.push_back(texelWrite(TS_BINDING_SUBDIV_SUPPORT, &mSupportHandle));
+    return writes;
+}
+
+std::vector<gpu::BindingDesc> GpuSubdiv::refineBindings(VkShaderStageFlags stages) {
+    std::vector<gpu::BindingDesc> bindings;
+    for (uint32_t binding : {TS_BINDING_SUBDIV_STENCILS, TS_BINDING_SUBDIV_ENTRIES, TS_BINDING_SUBDIV_CAGE})
+        bindings.push_back({binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, stages});
+    return bindings;
+}
+
+std::vector<VkWriteDescriptorSet> GpuSubdiv::refineWrites(uint32_t slot) {
+    mRefineViews = {mStencilsView.handle(), mEntriesView.handle(), mCageViews[slot].handle()};
+    return {texelWrite(TS_BINDING_SUBDIV_STENCILS, &mRefineViews[0]),
+            texelWrite(TS_BINDING_SUBDIV_ENTRIES, &mRefineViews[1]),
+            texelWrite(TS_BINDING_SUBDIV_CAGE, &mRefineViews[2])};
+}
+
 Status GpuSubdiv::updateTiles(gpu::FrameContext& frame, const backend::SubdivTileData& tiles,
                               std::span<const glm::uvec4> rects) {
     if (rects.empty()) return {};
@@ -181,17 +209,14 @@ Status GpuSubdiv::updateTiles(gpu::FrameContext& frame, const backend::SubdivTil
 }
 
 std::vector<glm::vec4> GpuSubdiv::readPoints() {
-    gpu::Buffer readback(*mDevice, mPoints.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUsage::GpuToCpu,
-                         mName + ".pointsReadback");
-    mDevice->waitIdle();
-    mDevice->submitImmediate(
-        [&](VkCommandBuffer cmd) {
-            const VkBufferCopy copy{0, 0, mPoints.size()};
-            vkCmdCopyBuffer(cmd, mPoints.handle(), readback.handle(), 1, &copy);
-        },
-        "subdiv.readPoints");
+    const std::vector<std::byte> bytes =
+        gpu::readBack(*mDevice, mPoints.size(), mName + ".pointsReadback", "subdiv.readPoints",
+                      [&](VkCommandBuffer cmd, const gpu::Buffer& readback) {
+                          const VkBufferCopy copy{0, 0, mPoints.size()};
+                          vkCmdCopyBuffer(cmd, mPoints.handle(), readback.handle(), 1, &copy);
+                      });
     std::vector<glm::vec4> points(mRefinedPointCount);
-    std::memcpy(points.data(), readback.mapped(), points.size() * sizeof(glm::vec4));
+    std::memcpy(points.data(), bytes.data(), points.size() * sizeof(glm::vec4));
     return points;
 }
 

@@ -1,6 +1,7 @@
 #include "common/TerrainResolvePass.h"
 
 #include "common/CommandHelpers.h"
+#include "common/TerrainBindings.h"
 #include "tessera/gpu/Device.h"
 #include "tessera/gpu/RenderTarget.h"
 #include "tessera/shaders/FrameUniforms.h"
@@ -23,14 +24,9 @@ TerrainResolvePass::TerrainResolvePass(gpu::Device& device, const std::string& b
     : mDevice(&device), mMode(mode) {
     const bool compute = mode == Mode::Compute;
     const VkShaderStageFlags stage = compute ? VK_SHADER_STAGE_COMPUTE_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
-    std::vector<gpu::BindingDesc> bindings = {
-        // The fragment resolve's vertex shader (sky.vert) reads the frame too.
-        {TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute ? stage : stage | VK_SHADER_STAGE_VERTEX_BIT},
-        {TS_BINDING_TERRAIN, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stage},
-        {TS_BINDING_HEIGHTMAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stage},
-        {TS_BINDING_SUN_VISIBILITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stage},
-        {TS_BINDING_DETAIL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stage},
-        {TS_BINDING_CHARACTER_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stage}};
+    std::vector<gpu::BindingDesc> bindings = terrainBindings(stage);
+    // The fragment resolve's vertex shader (sky.vert) reads the frame too.
+    if (!compute) bindings.front().stages |= VK_SHADER_STAGE_VERTEX_BIT;
     if (compute)
         bindings.push_back({TS_BINDING_RESOLVE_TARGET, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, stage});
     else
@@ -58,7 +54,7 @@ TerrainResolvePass::TerrainResolvePass(gpu::Device& device, const std::string& b
     mPipeline = gpu::Pipeline(device, desc);
 }
 
-void TerrainResolvePass::record(gpu::FrameContext& frame, const PushTerrainDescriptors& pushTerrain) {
+void TerrainResolvePass::record(gpu::FrameContext& frame, const PushTerrainBindings& pushTerrain) {
     gpu::PassScope pass(frame, "terrain.resolve");
     if (mMode == Mode::Compute)
         recordCompute(frame, pushTerrain);
@@ -66,7 +62,7 @@ void TerrainResolvePass::record(gpu::FrameContext& frame, const PushTerrainDescr
         recordFragment(frame, pushTerrain);
 }
 
-void TerrainResolvePass::recordCompute(gpu::FrameContext& frame, const PushTerrainDescriptors& pushTerrain) {
+void TerrainResolvePass::recordCompute(gpu::FrameContext& frame, const PushTerrainBindings& pushTerrain) {
     VkCommandBuffer cmd = frame.cmd();
     gpu::RenderTarget& target = frame.target();
     gpu::Image& color = target.color();
@@ -86,16 +82,13 @@ void TerrainResolvePass::recordCompute(gpu::FrameContext& frame, const PushTerra
                          kColorOutput, kColorAccess);
 }
 
-void TerrainResolvePass::recordFragment(gpu::FrameContext& frame, const PushTerrainDescriptors& pushTerrain) {
+void TerrainResolvePass::recordFragment(gpu::FrameContext& frame, const PushTerrainBindings& pushTerrain) {
     VkCommandBuffer cmd = frame.cmd();
     gpu::RenderTarget& target = frame.target();
     gpu::Image& color = target.color();
     if (!mSource || mSource->width() != target.width() || mSource->height() != target.height()) {
         // A frame in flight may still read the old copy.
-        if (mSource) {
-            auto* old = mSource.release();
-            mDevice->deferDestroy([old] { delete old; });
-        }
+        if (mSource) mDevice->deferRelease(std::move(mSource));
         gpu::ImageDesc desc;
         desc.width = target.width();
         desc.height = target.height();

@@ -10,82 +10,62 @@
 namespace tessera::gpu {
 
 Buffer::Buffer(Device& device, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUsage memory, std::string name)
-    : mDevice(&device), mSize(size) {
+    : mSize(size) {
     assert(size > 0);
     if (memory == MemoryUsage::GpuOnly) usage |= VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = size;
     info.usage = usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    TESSERA_VK_CHECK(vkCreateBuffer(device.handle(), &info, nullptr, &mBuffer));
-    device.setName(VK_OBJECT_TYPE_BUFFER, mBuffer, name);
+    VkBuffer buffer = VK_NULL_HANDLE;
+    TESSERA_VK_CHECK(vkCreateBuffer(device.handle(), &info, nullptr, &buffer));
+    mBuffer = {device, buffer, name};
 
     VkMemoryRequirements req;
-    vkGetBufferMemoryRequirements(device.handle(), mBuffer, &req);
+    vkGetBufferMemoryRequirements(device.handle(), buffer, &req);
     VkMemoryPropertyFlags flags = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
     if (memory == MemoryUsage::CpuToGpu) flags = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     if (memory == MemoryUsage::GpuToCpu)
         flags = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT | VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
-    try {
-        mMemory = device.allocate(req, flags, name);
-    } catch (...) {
-        reset(); // the buffer made above; the destructor does not run for a constructor that throws
-        throw;
-    }
-    mAllocationSize = req.size;
-    TESSERA_VK_CHECK(vkBindBufferMemory(device.handle(), mBuffer, mMemory, 0));
-    if (memory != MemoryUsage::GpuOnly) TESSERA_VK_CHECK(vkMapMemory(device.handle(), mMemory, 0, VK_WHOLE_SIZE, 0, &mMapped));
+    // If this throws, mBuffer (complete) is destroyed with the half-built object.
+    mMemory = device.allocate(req, flags, name);
+    TESSERA_VK_CHECK(vkBindBufferMemory(device.handle(), buffer, mMemory.get(), 0));
+    if (memory != MemoryUsage::GpuOnly)
+        TESSERA_VK_CHECK(vkMapMemory(device.handle(), mMemory.get(), 0, VK_WHOLE_SIZE, 0, &mMapped));
 }
 
-Buffer::~Buffer() { reset(); }
-
-Buffer::Buffer(Buffer&& other) noexcept { *this = std::move(other); }
-
-Buffer& Buffer::operator=(Buffer&& other) noexcept {
-    if (this != &other) {
-        reset();
-        mDevice = std::exchange(other.mDevice, nullptr);
-        mBuffer = std::exchange(other.mBuffer, VK_NULL_HANDLE);
-        mMemory = std::exchange(other.mMemory, VK_NULL_HANDLE);
-        mSize = std::exchange(other.mSize, 0);
-        mAllocationSize = std::exchange(other.mAllocationSize, 0);
-        mMapped = std::exchange(other.mMapped, nullptr);
-    }
-    return *this;
+Buffer Buffer::staging(Device& device, std::span<const std::byte> bytes, std::string name) {
+    Buffer buffer(device, bytes.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::CpuToGpu, std::move(name));
+    std::memcpy(buffer.mapped(), bytes.data(), bytes.size());
+    return buffer;
 }
 
 void Buffer::reset() {
-    if (!mDevice) return;
-    mDevice->clearName(VK_OBJECT_TYPE_BUFFER, mBuffer);
-    vkDestroyBuffer(mDevice->handle(), mBuffer, nullptr);
-    mDevice->free(mMemory, mAllocationSize);
-    mDevice = nullptr;
-    mBuffer = VK_NULL_HANDLE;
-    mMemory = VK_NULL_HANDLE;
+    mBuffer.reset();
+    mMemory.reset();
     mMapped = nullptr;
 }
 
 void Buffer::deferredReset() {
-    if (!mDevice) return;
-    // Move the handles into a heap copy whose destructor runs once the frame
-    // now recording has retired; this object is empty from here on.
-    auto* doomed = new Buffer(std::move(*this));
-    doomed->mDevice->deferDestroy([doomed] { delete doomed; });
+    Device* device = mBuffer.device();
+    if (!device) return;
+    // This object is empty from here on.
+    device->deferRelease(std::move(*this));
 }
 
 void Buffer::upload(std::span<const std::byte> bytes, VkDeviceSize offset) {
     assert(offset + bytes.size() <= mSize);
     if (bytes.empty()) return;
-    if (mMapped) {
-        std::memcpy(static_cast<std::byte*>(mMapped) + offset, bytes.data(), bytes.size());
+    if (mapped()) {
+        std::memcpy(static_cast<std::byte*>(mapped()) + offset, bytes.data(), bytes.size());
         return;
     }
-    Buffer staging(*mDevice, bytes.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::CpuToGpu, "staging.buffer");
-    std::memcpy(staging.mapped(), bytes.data(), bytes.size());
-    mDevice->submitImmediate(
+    Device& device = *mBuffer.device();
+    const Buffer source = staging(device, bytes, "staging.buffer");
+    device.submitImmediate(
         [&](VkCommandBuffer cmd) {
             VkBufferCopy region{0, offset, bytes.size()};
-            vkCmdCopyBuffer(cmd, staging.handle(), mBuffer, 1, &region);
+            vkCmdCopyBuffer(cmd, source.handle(), handle(), 1, &region);
         },
         "upload.buffer");
 }

@@ -29,6 +29,30 @@ Fn load(VkDevice device, const char* name) {
     return reinterpret_cast<Fn>(vkGetDeviceProcAddr(device, name));
 }
 
+/// The extension entry points Tessera calls, loaded once for `device`.
+DeviceFunctions loadFunctions(VkInstance instance, VkDevice device, bool transformFeedback) {
+    DeviceFunctions fn;
+    fn.cmdPushDescriptorSet = load<PFN_vkCmdPushDescriptorSetKHR>(device, "vkCmdPushDescriptorSetKHR");
+    // Debug-utils entry points come from the instance extension; the loader
+    // hands out device-level trampolines for them.
+    fn.setObjectName = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+        vkGetInstanceProcAddr(instance, "vkSetDebugUtilsObjectNameEXT"));
+    fn.cmdBeginLabel = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(instance, "vkCmdBeginDebugUtilsLabelEXT"));
+    fn.cmdEndLabel = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(instance, "vkCmdEndDebugUtilsLabelEXT"));
+    fn.cmdInsertLabel = reinterpret_cast<PFN_vkCmdInsertDebugUtilsLabelEXT>(
+        vkGetInstanceProcAddr(instance, "vkCmdInsertDebugUtilsLabelEXT"));
+    if (transformFeedback) {
+        fn.cmdBindTransformFeedbackBuffers =
+            load<PFN_vkCmdBindTransformFeedbackBuffersEXT>(device, "vkCmdBindTransformFeedbackBuffersEXT");
+        fn.cmdBeginTransformFeedback = load<PFN_vkCmdBeginTransformFeedbackEXT>(device, "vkCmdBeginTransformFeedbackEXT");
+        fn.cmdEndTransformFeedback = load<PFN_vkCmdEndTransformFeedbackEXT>(device, "vkCmdEndTransformFeedbackEXT");
+        fn.cmdDrawIndirectByteCount = load<PFN_vkCmdDrawIndirectByteCountEXT>(device, "vkCmdDrawIndirectByteCountEXT");
+    }
+    return fn;
+}
+
 } // namespace
 
 Result<std::unique_ptr<Device>> Device::create(Instance& instance, const PhysicalDeviceInfo& physical) {
@@ -99,25 +123,8 @@ Result<std::unique_ptr<Device>> Device::create(Instance& instance, const Physica
         return fail(physical.features.deviceName, ": could not create the Vulkan device (", resultName(result), ")");
     vkGetDeviceQueue(device->mDevice, family, 0, &device->mQueue);
 
-    auto& fn = device->mFn;
+    device->mFn = loadFunctions(instance.handle(), device->mDevice, want.transformFeedback);
     VkDevice d = device->mDevice;
-    fn.cmdPushDescriptorSet = load<PFN_vkCmdPushDescriptorSetKHR>(d, "vkCmdPushDescriptorSetKHR");
-    // Debug-utils entry points come from the instance extension; the loader
-    // hands out device-level trampolines for them.
-    fn.setObjectName = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
-        vkGetInstanceProcAddr(instance.handle(), "vkSetDebugUtilsObjectNameEXT"));
-    fn.cmdBeginLabel = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
-        vkGetInstanceProcAddr(instance.handle(), "vkCmdBeginDebugUtilsLabelEXT"));
-    fn.cmdEndLabel = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
-        vkGetInstanceProcAddr(instance.handle(), "vkCmdEndDebugUtilsLabelEXT"));
-    fn.cmdInsertLabel = reinterpret_cast<PFN_vkCmdInsertDebugUtilsLabelEXT>(
-        vkGetInstanceProcAddr(instance.handle(), "vkCmdInsertDebugUtilsLabelEXT"));
-    if (want.transformFeedback) {
-        fn.cmdBindTransformFeedbackBuffers = load<PFN_vkCmdBindTransformFeedbackBuffersEXT>(d, "vkCmdBindTransformFeedbackBuffersEXT");
-        fn.cmdBeginTransformFeedback = load<PFN_vkCmdBeginTransformFeedbackEXT>(d, "vkCmdBeginTransformFeedbackEXT");
-        fn.cmdEndTransformFeedback = load<PFN_vkCmdEndTransformFeedbackEXT>(d, "vkCmdEndTransformFeedbackEXT");
-        fn.cmdDrawIndirectByteCount = load<PFN_vkCmdDrawIndirectByteCountEXT>(d, "vkCmdDrawIndirectByteCountEXT");
-    }
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
@@ -178,7 +185,7 @@ uint32_t Device::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags require
     return UINT32_MAX;
 }
 
-VkDeviceMemory Device::allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags flags, const std::string& name) {
+DeviceMemory Device::allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags flags, const std::string& name) {
     uint32_t type = findMemoryType(req.memoryTypeBits, flags);
     // Cached readback memory is a preference, not a requirement.
     if (type == UINT32_MAX && (flags & VK_MEMORY_PROPERTY_HOST_CACHED_BIT))
@@ -203,19 +210,23 @@ VkDeviceMemory Device::allocate(const VkMemoryRequirements& req, VkMemoryPropert
     if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
         throw outOfMemory(std::string(" (") + resultName(result) + ")");
     TESSERA_VK_CHECK(result);
-    setName(VK_OBJECT_TYPE_DEVICE_MEMORY, memory, name + ".memory");
+    DeviceMemory owned(*this, memory, name + ".memory");
+    mAllocationSizes.emplace(memory, req.size);
     const uint64_t now = (mAllocatedBytes += req.size);
     uint64_t peak = mPeakBytes.load();
     while (now > peak && !mPeakBytes.compare_exchange_weak(peak, now)) {
     }
-    return memory;
+    return owned;
 }
 
-void Device::free(VkDeviceMemory memory, VkDeviceSize size) {
+void Device::free(VkDeviceMemory memory) {
     if (!memory) return;
+    const auto size = mAllocationSizes.find(memory);
     clearName(VK_OBJECT_TYPE_DEVICE_MEMORY, memory);
     vkFreeMemory(mDevice, memory, nullptr);
-    mAllocatedBytes -= size;
+    if (size == mAllocationSizes.end()) return;
+    mAllocatedBytes -= size->second;
+    mAllocationSizes.erase(size);
 }
 
 void Device::submitImmediate(const std::function<void(VkCommandBuffer)>& record, const char* label) {

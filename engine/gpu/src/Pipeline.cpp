@@ -6,11 +6,31 @@
 #include "tessera/gpu/VulkanCheck.h"
 
 #include <cassert>
-#include <utility>
 
 namespace tessera::gpu {
+namespace {
 
-Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) : mDevice(&device) {
+/// One blend state per colour target: writes everything, with straight
+/// alpha blending when the desc asks for it.
+std::vector<VkPipelineColorBlendAttachmentState> blendAttachments(const GraphicsPipelineDesc& desc) {
+    std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
+    for (auto& b : blends) {
+        b.colorWriteMask = 0xF;
+        if (!desc.alphaBlend) continue;
+        b.blendEnable = VK_TRUE;
+        b.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+        b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        b.colorBlendOp = VK_BLEND_OP_ADD;
+        b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        b.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
+    return blends;
+}
+
+} // namespace
+
+Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) {
     assert(desc.layout);
     // Modules are only needed while the pipeline is compiled.
     std::vector<ShaderModule> modules;
@@ -56,18 +76,7 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) : mDevice(&
     depth.depthWriteEnable = desc.depthWrite;
     depth.depthCompareOp = desc.depthCompare;
 
-    std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
-    for (auto& b : blends) {
-        b.colorWriteMask = 0xF;
-        if (!desc.alphaBlend) continue;
-        b.blendEnable = VK_TRUE;
-        b.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
-        b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-        b.colorBlendOp = VK_BLEND_OP_ADD;
-        b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-        b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-        b.alphaBlendOp = VK_BLEND_OP_ADD;
-    }
+    const std::vector<VkPipelineColorBlendAttachmentState> blends = blendAttachments(desc);
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     blend.attachmentCount = static_cast<uint32_t>(blends.size());
     blend.pAttachments = blends.data();
@@ -95,29 +104,9 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) : mDevice(&
     info.pColorBlendState = &blend;
     info.pDynamicState = &dynamic;
     info.layout = desc.layout->handle();
-    TESSERA_VK_CHECK(vkCreateGraphicsPipelines(device.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &mPipeline));
-    device.setName(VK_OBJECT_TYPE_PIPELINE, mPipeline, desc.name);
-}
-
-Pipeline::~Pipeline() {
-    if (mDevice) {
-        mDevice->clearName(VK_OBJECT_TYPE_PIPELINE, mPipeline);
-        vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
-    }
-}
-
-Pipeline::Pipeline(Pipeline&& other) noexcept { *this = std::move(other); }
-
-Pipeline& Pipeline::operator=(Pipeline&& other) noexcept {
-    if (this != &other) {
-        if (mDevice) {
-            mDevice->clearName(VK_OBJECT_TYPE_PIPELINE, mPipeline);
-            vkDestroyPipeline(mDevice->handle(), mPipeline, nullptr);
-        }
-        mDevice = std::exchange(other.mDevice, nullptr);
-        mPipeline = std::exchange(other.mPipeline, VK_NULL_HANDLE);
-    }
-    return *this;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    TESSERA_VK_CHECK(vkCreateGraphicsPipelines(device.handle(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+    mPipeline = {device, pipeline, desc.name};
 }
 
 } // namespace tessera::gpu

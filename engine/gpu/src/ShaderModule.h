@@ -2,6 +2,7 @@
 // Internal: a named VkShaderModule that lives while a pipeline is compiled.
 
 #include "tessera/gpu/Device.h"
+#include "tessera/gpu/UniqueHandle.h"
 
 #include <cstdint>
 #include <span>
@@ -12,17 +13,11 @@ namespace tessera::gpu {
 class ShaderModule {
 public:
     ShaderModule(Device& device, std::span<const uint32_t> spirv, const std::string& name);
-    ~ShaderModule();
-    ShaderModule(const ShaderModule&) = delete;
-    ShaderModule& operator=(const ShaderModule&) = delete;
-    ShaderModule(ShaderModule&& other) noexcept;
-    ShaderModule& operator=(ShaderModule&&) = delete;
 
-    VkShaderModule handle() const { return mModule; }
+    VkShaderModule handle() const { return mModule.get(); }
 
 private:
-    Device* mDevice;
-    VkShaderModule mModule = VK_NULL_HANDLE;
+    UniqueHandle<VkShaderModule, VK_OBJECT_TYPE_SHADER_MODULE> mModule;
 };
 
 } // namespace tessera::gpu

@@ -1,21 +1,30 @@
 #pragma once
 /// @file BasicCharacterBackend.h
-/// What the three GPU backends share for characters: upload (GpuCharacter),
-/// per-instance uniforms and skinning palettes, the order of the two passes
-/// and the descriptors every character draw binds. Each backend supplies its
-/// own technique for the two halves the paper's eras differ in:
+/// The character and crowd commands of the contract, written once for
+/// every GPU backend (the top of the shared chain, BasicTerrainBackend.h).
+///
+/// Characters: upload (GpuCharacter), per-instance uniforms and skinning
+/// palettes, the order of the two passes and the descriptors every
+/// character draw binds. Each backend supplies its own technique for the two
+/// halves the paper's eras differ in:
 ///  - skinCharacter: pass 1 of the two-pass path, animating every cage vertex
 ///    once into the 128-bit compressed format with its era's recirculation
 ///    (compute, transform feedback, or a render target re-read as a stream);
 ///  - drawCharacter: the tessellated draw (hardware tessellation stages, or
 ///    the emulated tessellator's pattern through an evaluation vertex shader).
+///
+/// Instanced crowds: the crowds' table (GpuCrowd), the frame's order of a
+/// draw (last time's counts reported, instances and uniforms uploaded, the
+/// technique's culling and binning outside the main pass, the counts'
+/// copy, the tier draws inside it, the report) and the blocking read of
+/// the tiers; each backend supplies its culling, binning and draws.
 
-#include "common/BasicTerrainBackend.h"
+#include "common/BasicSubdivBackend.h"
 #include "common/GpuCharacter.h"
-#include "common/GpuSubdivSet.h"
+#include "common/GpuCrowd.h"
+#include "common/GpuObjectTable.h"
 
 #include <functional>
-#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -49,36 +58,36 @@ gpu::PipelineLayout characterLayout(gpu::Device& device, CharacterBindings bindi
 using CharacterPushFn = std::function<void(VkPipelineBindPoint, CharacterBindings, const gpu::PipelineLayout&,
                                            const CharacterInstance&, std::span<const VkWriteDescriptorSet>)>;
 
-class BasicCharacterBackend : public BasicTerrainBackend {
+/// One crowd's frame, as the technique's passes and draws read it.
+struct CrowdFrame {
+    uint32_t slot = 0;           ///< the frame slot
+    uint32_t instanceCount = 0;  ///< valid instances uploaded this frame (GpuCrowd::uploadInstances)
+    gpu::UniformSlice uniforms;  ///< shader::CrowdUniforms
+};
+
+class BasicCharacterBackend : public BasicSubdivBackend {
 public:
-    Result<backend::CharacterHandle> createCharacter(const backend::CharacterDesc& desc) override;
-    void destroyCharacter(backend::CharacterHandle character) override;
-    void drawCharacters(const backend::CharacterDrawInfo& draw) override;
-    void shutdown() override;
+    Result<backend::CharacterHandle> createCharacter(const backend::CharacterDesc& desc) final;
+    void destroyCharacter(backend::CharacterHandle character) final;
+    void drawCharacters(const backend::CharacterDrawInfo& draw) final;
 
-    // Instanced crowds: every GPU backend culls and bins them on the GPU
-    // with its own technique and overrides these (and sets
-    // BackendCapabilities::crowd); a backend derived from this class that
-    // does not refuses, and hosts draw its crowds through drawCharacters.
-    Result<backend::CrowdHandle> createCrowd(const backend::CrowdDesc& desc) override;
-    void destroyCrowd(backend::CrowdHandle) override {}
-    void drawCrowd(backend::CrowdHandle, const backend::CrowdDrawInfo&) override {}
-    Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle crowd) override;
-
-    // Subdivision surfaces: the handle table, uploads and the frame's order
-    // are shared; a backend that sets BackendCapabilities::subdiv supplies
-    // its refine (and level) passes and its tessellated draw.
-    Result<backend::SubdivHandle> createSubdiv(const backend::SubdivDesc& desc) override;
-    void destroySubdiv(backend::SubdivHandle surface) override;
-    void updateSubdivTiles(backend::SubdivHandle surface, const backend::SubdivTileData& tiles,
-                           std::span<const glm::uvec4> rects) override;
-    void drawSubdiv(backend::SubdivHandle surface, const backend::SubdivDrawInfo& draw) override;
-    Result<backend::SubdivPoints> readSubdivPoints(backend::SubdivHandle surface) override;
+    // Instanced crowds: a backend that sets BackendCapabilities::crowd culls
+    // and bins them with its own technique (the crowd hooks below); one that
+    // does not refuses createCrowd, and hosts draw its crowds through
+    // drawCharacters.
+    Result<backend::CrowdHandle> createCrowd(const backend::CrowdDesc& desc) final;
+    void destroyCrowd(backend::CrowdHandle crowd) final;
+    void drawCrowd(backend::CrowdHandle crowd, const backend::CrowdDrawInfo& draw) final;
+    Result<backend::CrowdTiers> readCrowdTiers(backend::CrowdHandle crowd) final;
 
 protected:
+    // What a backend supplies for characters (its technique).
     /// Buffer usage pass 1 writes compressed cages with (storage for compute,
     /// transform feedback, transfer destination for a render-target copy).
     virtual VkBufferUsageFlags compressedCageUsage() const = 0;
+    /// Attaches the technique's per-character resources (GpuCharacter::attach,
+    /// a TechniqueExtension) once the character is made; an error refuses it.
+    virtual Status attachCharacterResources(GpuCharacter& /*character*/) { return {}; }
     /// Pass 1, outside the main pass: writes `instance.compressed` and leaves
     /// it visible to vertex-shader reads.
     virtual void skinCharacter(const CharacterInstance& instance) = 0;
@@ -88,19 +97,24 @@ protected:
     /// pattern streams) beyond the compressed cages, for FrameReport.
     virtual uint64_t characterPassBytes() const { return 0; }
 
-    /// How the refine pass writes a surface's refined points (buffer usage).
-    virtual VkBufferUsageFlags subdivWriteUsage() const { return 0; }
-    /// Outside the main pass: refines `surface`'s points from the frame
-    /// slot's cage (and whatever else the technique prepares: levels,
-    /// records, commands), leaving them ready for the draw.
-    virtual void subdivPrePasses(GpuSubdiv&, const gpu::UniformSlice& /*uniforms*/) {}
-    /// Inside the main pass: tessellates, displaces and draws the surface.
-    virtual void subdivDraw(GpuSubdiv&, const gpu::UniformSlice& /*uniforms*/) {}
-    /// Makes the subdivision table (call from initializeTechnique of a
-    /// backend that draws surfaces).
-    void initializeSubdiv() { mSubdivs = GpuSubdivSet(*mDevice, subdivWriteUsage()); }
-    /// The surface, or null for an unknown or destroyed handle.
-    GpuSubdiv* findSubdiv(backend::SubdivHandle handle) { return mSubdivs.find(handle); }
+    // What a backend that draws crowds supplies (its technique).
+    /// How its passes write a crowd's lists, commands and near slots (added
+    /// to their buffers' usage: storage, transform feedback or transfer).
+    virtual VkBufferUsageFlags crowdWriteUsage() const { return 0; }
+    /// Attaches the technique's per-crowd resources (GpuCrowd::attach, a
+    /// TechniqueExtension, named after `handle`) once the crowd is made; an
+    /// error refuses it.
+    virtual Status attachCrowdResources(GpuCrowd& /*crowd*/, backend::CrowdHandle /*handle*/) { return {}; }
+    /// Outside the main pass: culls and bins the frame's instances into the
+    /// tier lists with their counts in the indirect commands (the shared
+    /// rule of CrowdLod.h against the technique's LOD state), and fills and
+    /// skins the near slots; leaves lists and commands final, ready for the
+    /// counts' copy and for the draws.
+    virtual void recordCrowdPasses(GpuCrowd& /*crowd*/, const CrowdFrame& /*frame*/) {}
+    /// Inside the main pass: each tier's draws.
+    virtual void recordCrowdDraws(GpuCrowd& /*crowd*/, const CrowdFrame& /*frame*/) {}
+    /// GPU passes one drawCrowd records (passes and draws), for FrameReport::passes.
+    virtual uint32_t crowdPassCount() const { return 0; }
 
     /// Pushes the bindings every character pipeline shares (frame, character,
     /// palette, and the maps for `Draw`) plus `extra` (the cage and
@@ -111,11 +125,11 @@ protected:
     /// pushCharacterDescriptors as a callable for the pass objects.
     CharacterPushFn characterPush();
 
-    GpuCharacter* findCharacter(backend::CharacterHandle handle);
+    void releaseObjects() override;
 
 private:
-    std::vector<std::unique_ptr<GpuCharacter>> mCharacters;
-    GpuSubdivSet mSubdivs;
+    GpuObjectTable<GpuCharacter, backend::CharacterHandle> mCharacters;
+    GpuObjectTable<GpuCrowd, backend::CrowdHandle> mCrowds;
 };
 
 } // namespace tessera::backends

@@ -1,20 +1,39 @@
 #pragma once
 /// @file BasicTerrainBackend.h
-/// What the three GPU backends share: terrain upload, crater splats into the
-/// GPU height map, its readback, and the untessellated control mesh (the
-/// paper's low-resolution mode), displaced by vertex texture fetch and shaded
-/// from the height map. Each backend derives from it, states its capabilities
-/// and draws the tessellated modes with its own technique (drawTessellated).
+/// The base of every GPU backend and the first layer of the shared chain
+///   BasicTerrainBackend -> BasicSubdivBackend -> BasicCharacterBackend
+///   (-> EmulatedTerrainBackend for the emulated tessellator),
+/// which implements each whole-job command of the contract once, as
+/// Filament's renderer keeps the order of work above its drivers: a backend
+/// supplies only its technique, through the protected hooks of each layer
+/// (plugins/BackendTemplate/README.md lists them).
+///
+/// This layer: the frame, terrain upload, crater splats into the GPU height
+/// map, its readback, and the untessellated control mesh (the paper's
+/// low-resolution mode), displaced by vertex texture fetch and shaded from
+/// the height map; a backend draws the tessellated modes with its own
+/// technique (drawTessellated).
 ///
 /// The frame's main pass (into the host's target) opens lazily on the first
 /// draw, so a backend can run its own off-target passes (R2VB render targets,
 /// stream-out, compute) before it. In the full look the frame's terrain is
 /// shaded after the main pass by the terrain resolve (TerrainResolvePass),
 /// which also draws the sky; with no terrain the sky pass draws it.
+///
+/// Submitting and waiting: between beginFrame and endFrame a backend only
+/// records into the host's FrameContext; it never submits, presents or
+/// waits. Outside a frame it blocks only through the GPU layer, each in one
+/// place: creation-time uploads through gpu::Buffer::upload and
+/// gpu::Image::upload, the contract's blocking reads (readTerrainHeights,
+/// readCrowdTiers, readSubdivPoints) through gpu::readBack, and shutdown
+/// through Device::waitIdle.
 
 #include "common/CharacterShadowPass.h"
+#include "common/FillWirePipelines.h"
+#include "common/GpuObjectTable.h"
 #include "common/GpuTerrain.h"
 #include "common/SkyPass.h"
+#include "common/TerrainBindings.h"
 #include "common/TerrainSplatPass.h"
 #include "common/TerrainResolvePass.h"
 #include "common/TerrainSunPass.h"
@@ -23,39 +42,57 @@
 #include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/PipelineLayout.h"
 
-#include <memory>
+#include <span>
 #include <vector>
 
 namespace tessera::backends {
 
 class BasicTerrainBackend : public backend::Backend {
 public:
-    Status initialize(const backend::BackendInitInfo& info) override;
-    void shutdown() override;
-    Result<backend::TerrainHandle> createTerrain(const backend::TerrainDesc& desc) override;
-    void destroyTerrain(backend::TerrainHandle terrain) override;
-    void beginFrame(const backend::FrameInfo& frame) override;
-    void splatTerrain(backend::TerrainHandle terrain, std::span<const terrain::CraterSplat> splats) override;
-    void drawTerrain(backend::TerrainHandle terrain, const backend::TerrainDrawInfo& draw) override;
-    Result<std::vector<uint16_t>> readTerrainHeights(backend::TerrainHandle terrain) override;
-    void endFrame() override;
-    backend::FrameReport lastFrameReport() override { return mLastReport; }
+    // The contract's frame and terrain commands, written once for every GPU
+    // backend (final: a backend supplies the hooks below instead).
+    /// describeCapabilities(), with what `device` lacks of it in `missing`.
+    backend::BackendCapabilities capabilities(const device::DeviceFeatures* device) final;
+    Status initialize(const backend::BackendInitInfo& info) final;
+    void shutdown() final;
+    Result<backend::TerrainHandle> createTerrain(const backend::TerrainDesc& desc) final;
+    void destroyTerrain(backend::TerrainHandle terrain) final;
+    void beginFrame(const backend::FrameInfo& frame) final;
+    void splatTerrain(backend::TerrainHandle terrain, std::span<const terrain::CraterSplat> splats) final;
+    void drawTerrain(backend::TerrainHandle terrain, const backend::TerrainDrawInfo& draw) final;
+    Result<std::vector<uint16_t>> readTerrainHeights(backend::TerrainHandle terrain) final;
+    void endFrame() final;
+    backend::FrameReport lastFrameReport() final { return mLastReport; }
 
 protected:
-    /// Checks `device` against what the derived backend needs; shared by the
-    /// capability queries so every backend words missing features the same way.
-    static void checkRequirements(const device::DeviceFeatures* device, backend::BackendCapabilities& caps);
-
+    // What a backend supplies (its technique).
+    /// What the backend is and does: its name and description, tessellation
+    /// path and maximum level, terrain modes, crowds and surfaces, and the
+    /// device features it uses (BackendCapabilities' uses* fields), which
+    /// capabilities() checks against a device in one wording for all.
+    virtual backend::BackendCapabilities describeCapabilities() const = 0;
     /// How the full look's terrain resolve runs: a fullscreen fragment pass
     /// unless the backend has compute (TerrainResolvePass).
     virtual TerrainResolvePass::Mode terrainResolveMode() const { return TerrainResolvePass::Mode::Fragment; }
     /// Creates the derived backend's own pipelines, after the shared ones.
     virtual Status initializeTechnique(const backend::BackendInitInfo&) { return {}; }
+    /// Releases them (the device is idle and every object already released).
     virtual void shutdownTechnique() {}
+    /// Resets the technique's per-frame state, at the end of beginFrame.
+    virtual void beginTechniqueFrame() {}
+    /// Refuses, before anything is made, a terrain the technique cannot draw
+    /// on this device (a device limit), with a message naming it.
+    virtual Status checkTerrain(const backend::TerrainDesc&) { return {}; }
     /// Draws a continuous or adaptive terrain; called only for modes the
     /// backend's capabilities list, with maxLevel already clamped to its maximum.
     virtual void drawTessellated(GpuTerrain&, const backend::TerrainDrawInfo&) {}
 
+    /// Releases every object the create commands made, at shutdown once the
+    /// device is idle: each layer of the class chain releases its own table,
+    /// then calls its base's.
+    virtual void releaseObjects() { mTerrains.clear(); }
+
+    // What the shared sequencing offers a technique.
     /// Opens the main pass into the host's target if it is not open yet
     /// (clearing it the first time in a frame, keeping its contents after).
     void ensureMainPass();
@@ -63,12 +100,12 @@ protected:
     void suspendMainPass();
     /// Draws the visible patches of `terrain` as the untessellated control mesh.
     void drawControlMesh(GpuTerrain& terrain, std::span<const uint32_t> patches, const char* passName);
-    /// Pushes the frame, terrain, height-map, sun-visibility, detail and
-    /// character-shadow bindings (set 0: 0..2, TS_BINDING_SUN_VISIBILITY,
-    /// TS_BINDING_DETAIL, TS_BINDING_CHARACTER_SHADOW) plus `extra` writes
-    /// for `layout`, which must declare all six.
+    /// Pushes the terrain's shared bindings (TerrainBindings.h) plus `extra`
+    /// writes for `layout`, which terrainLayout made.
     void pushTerrainDescriptors(VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout, GpuTerrain& terrain,
                                 std::span<const VkWriteDescriptorSet> extra = {});
+    /// pushTerrainDescriptors for `terrain` as a callable for the pass objects.
+    PushTerrainBindings terrainPush(GpuTerrain& terrain);
     /// Pixels one metre covers seen face-on from one metre away (the metrics' scale).
     float pixelsPerMetre() const;
     /// This frame's shader::TerrainTessUniforms for a draw of `terrain`, with
@@ -85,17 +122,17 @@ protected:
     bool mWireframeSupported = false;
 
 private:
-    GpuTerrain* find(backend::TerrainHandle handle);
+    /// Adds to `caps.missing` what `device` lacks of what `caps` uses.
+    static void checkRequirements(const device::DeviceFeatures* device, backend::BackendCapabilities& caps);
 
     gpu::PipelineLayout mLayout;
-    gpu::Pipeline mFillPipeline;
-    gpu::Pipeline mWirePipeline;
+    FillWirePipelines mPipelines;
     TerrainSplatPass mSplatPass;
     TerrainSunPass mSunPass;
     CharacterShadowPass mShadowPass;
     SkyPass mSkyPass;
     TerrainResolvePass mResolvePass;
-    std::vector<std::unique_ptr<GpuTerrain>> mTerrains;
+    GpuObjectTable<GpuTerrain, backend::TerrainHandle> mTerrains;
     /// The full look's terrain this frame, shaded by mResolvePass after the
     /// main pass; a second terrain in the same frame is shaded forward.
     GpuTerrain* mResolveTerrain = nullptr;

@@ -8,9 +8,8 @@
 /// instance counts were made (compute, transform feedback, render targets).
 
 #include "common/CrowdDescriptors.h"
+#include "common/CrowdPipeline.h"
 #include "common/GpuCrowd.h"
-#include "tessera/gpu/Pipeline.h"
-#include "tessera/gpu/PipelineLayout.h"
 
 #include <cstdint>
 #include <span>
@@ -31,9 +30,7 @@ public:
     void record(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors);
 
 private:
-    gpu::Device* mDevice = nullptr;
-    gpu::PipelineLayout mLayout;
-    gpu::Pipeline mPipeline;
+    CrowdPipeline mPipeline;
 };
 
 } // namespace tessera::backends

@@ -10,6 +10,7 @@
 /// index from a texel buffer (the compressed vertices of pass 1, or for the
 /// single-pass path the bind-pose cage, skinned per tessellated vertex).
 
+#include "common/FillWirePipelines.h"
 #include "common/BasicCharacterBackend.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/Pipeline.h"
@@ -49,7 +50,7 @@ private:
     gpu::Device* mDevice = nullptr;
     std::string mName;
     gpu::PipelineLayout mLayout;
-    gpu::Pipeline mPipelines[2][2];  ///< [single-pass][wireframe]
+    FillWirePipelines mPipelines[2]; ///< [single-pass]
     struct Slot {
         gpu::Buffer stream;  ///< patterns of this frame: points (vec2) then indices (uint32)
         VkDeviceSize used = 0;

@@ -9,9 +9,8 @@
 /// the slots' compressed cages, each with its generation's technique.
 
 #include "common/CrowdDescriptors.h"
+#include "common/CrowdPipeline.h"
 #include "common/GpuCrowd.h"
-#include "tessera/gpu/Pipeline.h"
-#include "tessera/gpu/PipelineLayout.h"
 
 #include <string>
 
@@ -28,9 +27,7 @@ public:
     void record(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors);
 
 private:
-    gpu::Device* mDevice = nullptr;
-    gpu::PipelineLayout mLayout;
-    gpu::Pipeline mPipeline;
+    CrowdPipeline mPipeline;
 };
 
 } // namespace tessera::backends

@@ -8,10 +8,14 @@
 /// (terrain_emulated.vert), which places each pattern point from the
 /// record's levels and displaces it from the height map. The buffers a
 /// backend hands over follow EmulatedDrawSource.h. Subdivision surfaces use
-/// the same contract per tessellation domain (EmulatedSubdivPass).
+/// the same contract per tessellation domain (EmulatedSubdivPass), and the
+/// crowds' tiers are drawn here too (recordCrowdDraws).
 
+#include "common/FillWirePipelines.h"
 #include "common/BasicCharacterBackend.h"
+#include "common/CrowdMeshPass.h"
 #include "common/EmulatedCharacterPass.h"
+#include "common/EmulatedCrowdNearPass.h"
 #include "common/EmulatedDrawSource.h"
 #include "common/EmulatedSubdivPass.h"
 #include "tessera/gpu/Buffer.h"
@@ -21,26 +25,20 @@
 namespace tessera::backends {
 
 class EmulatedTerrainBackend : public BasicCharacterBackend {
-public:
-    /// Also fails, naming the limit, when the terrain has more patches than
-    /// a records texel buffer can hold on this device (2 texels per patch).
-    Result<backend::TerrainHandle> createTerrain(const backend::TerrainDesc& desc) override;
-    void beginFrame(const backend::FrameInfo& frame) override;
-    /// Also attaches the backend's per-surface resources
-    /// (attachSubdivResources), failing with its message, and fails when the
-    /// domains' records exceed a texel buffer (2 texels per domain).
-    Result<backend::SubdivHandle> createSubdiv(const backend::SubdivDesc& desc) override;
-
 protected:
     Status initializeTechnique(const backend::BackendInitInfo& info) final;
     void shutdownTechnique() final;
+    void beginTechniqueFrame() final;
+    /// Refuses, naming the limit, a terrain with more patches than a records
+    /// texel buffer can hold on this device (2 texels per patch).
+    Status checkTerrain(const backend::TerrainDesc& desc) final;
     void drawTessellated(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw) final;
     /// Characters: the emulated tessellator's pattern per level, instanced per
     /// cage triangle (EmulatedCharacterPass); pass 1 is each backend's own.
     void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) final;
-    uint64_t characterPassBytes() const override;
+    uint64_t characterPassBytes() const final;
 
-    /// Creates the backend's own factor passes.
+    /// Creates the backend's own factor passes (and the rest of its technique).
     virtual Status initializeFactorPasses(const backend::BackendInitInfo& info) = 0;
     virtual void shutdownFactorPasses() = 0;
     /// Records the backend's passes that turn `draw.visiblePatches` into
@@ -63,20 +61,29 @@ protected:
     /// five commands (the EmulatedDrawSource contract; patch index =
     /// domain index) from tsSubdivLevels of subdiv_levels.glsl, levels
     /// clamped to [1, TS_EMU_MAX_LEVEL], culled domains all-zero commands.
-    /// Per-surface buffers go in a GpuSubdiv::Extension, which
-    /// attachSubdivResources makes when the surface is created (its error
-    /// refuses the surface); the extension's bytes() are counted each frame
-    /// the surface is drawn.
-    virtual Status attachSubdivResources(GpuSubdiv& /*surface*/) { return {}; }
+    /// Per-surface buffers go in the surface's TechniqueExtension
+    /// (attachSubdivResources).
     virtual void recordSubdivRefine(GpuSubdiv& /*surface*/) {}
     virtual EmulatedDrawSource recordSubdivFactorPasses(GpuSubdiv& /*surface*/,
                                                         const gpu::UniformSlice& /*subdivUniforms*/) {
         return {};
     }
-    /// The hooks above in order, keeping the source for subdivDraw.
-    void subdivPrePasses(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) final;
+    /// Also refuses a surface whose domains' records exceed a texel buffer
+    /// (2 texels per domain).
+    Status checkSubdiv(const backend::SubdivDesc& desc) final;
+    /// The hooks above in order, keeping the source for recordSubdivDraw.
+    void recordSubdivPasses(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) final;
     /// The pattern pieces of the source through EmulatedSubdivPass.
-    void subdivDraw(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) final;
+    void recordSubdivDraw(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) final;
+
+    /// Instanced crowds: the backend's recordCrowdPasses writes the lists,
+    /// their commands, the near slot records, their commands
+    /// (tsCrowdNearCommand) and the slots' compressed cages; the tiers are
+    /// then drawn the same way on both emulated backends: the near tier
+    /// through the triangle patterns (EmulatedCrowdNearPass), the middle and
+    /// far tiers from the baked clips (CrowdMeshPass), reading the crowd as
+    /// texel buffers (CrowdDescriptors::Mode::Texels).
+    void recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame& frame) final;
 
     /// Bytes of the pattern buffers (shared by every frame).
     uint64_t patternBytes() const;
@@ -89,11 +96,12 @@ private:
     gpu::Buffer mPatternVertices; ///< one packed point reference per pattern vertex
     gpu::Buffer mKeyTable;        ///< shader::TsEmuKeyTable
     gpu::PipelineLayout mLayout;
-    gpu::Pipeline mFillPipeline;
-    gpu::Pipeline mWirePipeline;
+    FillWirePipelines mPipelines;
     EmulatedCharacterPass mCharacterPass;
     EmulatedSubdivPass mSubdivPass;
-    EmulatedDrawSource mSubdivSource; ///< the last subdivPrePasses' output
+    EmulatedDrawSource mSubdivSource; ///< the last recordSubdivPasses' output
+    EmulatedCrowdNearPass mCrowdNear;
+    CrowdMeshPass mCrowdMesh;
 };
 
 } // namespace tessera::backends

@@ -3,8 +3,10 @@
 /// A character's GPU resources shared by the backends: the bind-pose cage
 /// (CharacterVertex, shader::CharacterUniforms' layout), its triangle list,
 /// its maps, and the animated, compressed cage each drawn instance gets per
-/// frame (the paper's 128-bit vertices, CompressedVertex.h).
+/// frame (the paper's 128-bit vertices, CompressedVertex.h). What a
+/// backend's technique keeps per character is its TechniqueExtension.
 
+#include "common/TechniqueExtension.h"
 #include "tessera/shaders/CharacterUniforms.h"
 #include "tessera/backend/CharacterDesc.h"
 #include "tessera/character/CageMesh.h"
@@ -13,6 +15,7 @@
 #include "tessera/gpu/BufferView.h"
 #include "tessera/gpu/Device.h"
 #include "tessera/gpu/Image.h"
+#include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/Sampler.h"
 
 #include <array>
@@ -30,7 +33,7 @@ struct CompressedCage {
     gpu::BufferView view;
 };
 
-class GpuCharacter {
+class GpuCharacter : public ExtensionSlot {
 public:
     /// Extra usage the backend's pass 1 needs on the compressed buffers
     /// (storage for compute, transform feedback, transfer destination for R2VB).
@@ -42,8 +45,9 @@ public:
     uint32_t triangleCount() const { return mTriangleCount; }
     uint32_t paletteSize() const { return mPaletteSize; }
 
-    /// Bind-pose cage: vertex stream (stride 80), storage buffer, and an
-    /// RGBA32UI texel view (TS_CHARACTER_VERTEX_TEXELS texels per vertex).
+    /// Bind-pose cage: vertex stream (stride 80, useCageVertexStream),
+    /// storage buffer, and an RGBA32UI texel view
+    /// (TS_CHARACTER_VERTEX_TEXELS texels per vertex).
     gpu::Buffer& vertices() { return mVertices; }
     VkBufferView vertexTexels() const { return mVertexTexels.handle(); }
     /// Three uint32 per triangle: the index buffer, and the per-instance
@@ -80,6 +84,12 @@ public:
     float displacementScale() const { return mHasDisplacement ? mDisplacementScale : 0.0f; }
     float displacementBias() const { return mHasDisplacement ? mDisplacementBias : 0.0f; }
     bool hasNormalMap() const { return mHasNormalMap; }
+
+    /// Makes binding 0 of `desc` a cage as a vertex stream: stride
+    /// sizeof(shader::CharacterVertex), locations 0 to 4 position and u,
+    /// normal and v, tangent, joints, weights (the skinning passes that read
+    /// the cage as vertices).
+    static void useCageVertexStream(gpu::GraphicsPipelineDesc& desc);
 
     /// A cage (or a mesh sharing its bindings, such as the far mesh) as the
     /// GPU reads it: weights normalised, unused joints pointed at 0. Fails

@@ -8,8 +8,10 @@
 /// commands and triangle patterns, and a ring of per-frame instance buffers.
 /// Each backend's culling and binning technique writes the lists, commands
 /// and slots through the usage it names at creation (storage, transform
-/// feedback or transfer); the LOD state is the technique's own.
+/// feedback or transfer); the LOD state is the technique's own, with the
+/// rest of what the technique keeps per crowd, in its TechniqueExtension.
 
+#include "common/TechniqueExtension.h"
 #include "tessera/shaders/CrowdInstance.h"
 #include "common/GpuCharacter.h"
 #include "tessera/backend/CrowdDesc.h"
@@ -26,7 +28,7 @@
 
 namespace tessera::backends {
 
-class GpuCrowd {
+class GpuCrowd : public ExtensionSlot {
 public:
     /// One creature: its character (maps) and where its meshes sit.
     struct Creature {
@@ -109,7 +111,8 @@ public:
     bool stateCleared() const { return mStateCleared; }
     void setStateCleared() { mStateCleared = true; }
 
-    /// Device bytes of everything above, for FrameReport::intermediateBytes.
+    /// Device bytes of everything above (not the extension), for
+    /// FrameReport::intermediateBytes.
     uint64_t bytes() const;
 
 private:

@@ -7,6 +7,7 @@
 /// a ring of per-frame cage buffers, the displacement tiles as one R32F
 /// texture with their records, and the descriptors subdiv_eval.glsl binds.
 
+#include "common/TechniqueExtension.h"
 #include "tessera/shaders/SubdivLayout.h"
 #include "tessera/backend/SubdivDesc.h"
 #include "tessera/core/Result.h"
@@ -27,18 +28,10 @@
 
 namespace tessera::backends {
 
-class GpuSubdiv {
+/// The backend's own per-surface resources (its records, commands and
+/// render targets) are its TechniqueExtension (ExtensionSlot).
+class GpuSubdiv : public ExtensionSlot {
 public:
-    /// A backend's own per-surface resources (its records, commands and
-    /// render targets), owned by the surface so they are released with it,
-    /// after the frames that used them have retired.
-    struct Extension {
-        virtual ~Extension() = default;
-        /// Device bytes of the extension's buffers and targets (the frame
-        /// report counts them beside the backend's other intermediates).
-        virtual uint64_t bytes() const { return 0; }
-    };
-
     /// `writeUsage`: how the backend's refine pass writes the refined
     /// points (storage, transform feedback, or transfer from a target).
     /// Errors name the surface and the device limit it exceeds.
@@ -73,6 +66,16 @@ public:
     /// Push-descriptor writes for those bindings, with `uniforms` holding
     /// shader::SubdivUniforms. Valid while this object and `uniforms` live.
     std::vector<VkWriteDescriptorSet> evalWrites(const gpu::UniformSlice& uniforms);
+    /// evalBindings plus the domains' support (TS_BINDING_SUBDIV_SUPPORT),
+    /// for the passes that set the domains' levels and cull them; and their
+    /// writes, as evalWrites'.
+    static std::vector<gpu::BindingDesc> levelBindings(VkShaderStageFlags stages);
+    std::vector<VkWriteDescriptorSet> levelWrites(const gpu::UniformSlice& uniforms);
+    /// The refine passes' inputs (subdiv_refine.glsl): the stencils, their
+    /// entries and the cage, as texel buffers; and their writes for frame
+    /// slot `slot`'s cage, valid while this object lives.
+    static std::vector<gpu::BindingDesc> refineBindings(VkShaderStageFlags stages);
+    std::vector<VkWriteDescriptorSet> refineWrites(uint32_t slot);
 
     /// Re-uploads texel rectangles (x, y, width, height) of `tiles`,
     /// recorded into the frame outside any render pass; leaves the texture
@@ -80,16 +83,12 @@ public:
     Status updateTiles(gpu::FrameContext& frame, const backend::SubdivTileData& tiles,
                        std::span<const glm::uvec4> rects);
 
-    /// Blocking copy of the refined points (the device must be idle or the
-    /// last frame retired).
+    /// Blocking copy of the refined points the last completed frame wrote
+    /// (gpu::readBack: waits for the device to be idle).
     std::vector<glm::vec4> readPoints();
 
     /// Device bytes of everything above.
     uint64_t bytes() const;
-
-    /// The backend's extension (null until it attaches one).
-    Extension* extension() const { return mExtension.get(); }
-    void attach(std::unique_ptr<Extension> extension) { mExtension = std::move(extension); }
 
 private:
     GpuSubdiv() = default;
@@ -107,11 +106,12 @@ private:
     gpu::Image mTiles;
     gpu::Sampler mTileSampler;
     std::array<gpu::Buffer, gpu::kFramesInFlight> mTileStaging;
-    // Storage for evalWrites' descriptor infos.
+    // Storage for the writes' descriptor infos.
     VkDescriptorBufferInfo mUniformInfo{};
     VkDescriptorImageInfo mTileInfo{};
     std::array<VkBufferView, 6> mViews{};
-    std::unique_ptr<Extension> mExtension;
+    VkBufferView mSupportHandle = VK_NULL_HANDLE;
+    std::array<VkBufferView, 3> mRefineViews{};
 };
 
 } // namespace tessera::backends

@@ -19,6 +19,7 @@
 ///   copy only, so the D3D9- and D3D10-style backends run it. The sky pass
 ///   has drawn the sky in the main pass.
 
+#include "common/TerrainBindings.h"
 #include "tessera/gpu/ComputePipeline.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Image.h"
@@ -26,7 +27,6 @@
 #include "tessera/gpu/PipelineLayout.h"
 #include "tessera/gpu/Sampler.h"
 
-#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -36,11 +36,6 @@ namespace tessera::backends {
 class TerrainResolvePass {
 public:
     enum class Mode { Fragment, Compute };
-
-    /// Pushes set 0 for `layout`: the terrain's bindings (frame, terrain,
-    /// height map, sun visibility, detail, character shadow) plus `extra`.
-    using PushTerrainDescriptors = std::function<void(VkPipelineBindPoint, const gpu::PipelineLayout& layout,
-                                                      std::span<const VkWriteDescriptorSet> extra)>;
 
     TerrainResolvePass() = default;
     /// `colorFormat` and `depthFormat` are the main target's (Mode::Fragment
@@ -53,11 +48,11 @@ public:
     /// Records the pass "terrain.resolve" after the main pass has ended,
     /// leaving the target's colour in COLOR_ATTACHMENT_OPTIMAL, as the main
     /// pass does.
-    void record(gpu::FrameContext& frame, const PushTerrainDescriptors& pushTerrain);
+    void record(gpu::FrameContext& frame, const PushTerrainBindings& pushTerrain);
 
 private:
-    void recordCompute(gpu::FrameContext& frame, const PushTerrainDescriptors& pushTerrain);
-    void recordFragment(gpu::FrameContext& frame, const PushTerrainDescriptors& pushTerrain);
+    void recordCompute(gpu::FrameContext& frame, const PushTerrainBindings& pushTerrain);
+    void recordFragment(gpu::FrameContext& frame, const PushTerrainBindings& pushTerrain);
 
     gpu::Device* mDevice = nullptr;
     Mode mMode = Mode::Fragment;

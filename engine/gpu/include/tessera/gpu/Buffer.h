@@ -2,6 +2,8 @@
 /// @file Buffer.h
 /// A named VkBuffer with its own memory.
 
+#include "tessera/gpu/UniqueHandle.h"
+
 #include <vulkan/vulkan.h>
 
 #include <cstddef>
@@ -23,18 +25,20 @@ enum class MemoryUsage {
 class Buffer {
 public:
     Buffer() = default;
+    /// Makes and names the buffer and its memory ("`name`.memory"). When the
+    /// memory cannot be had (OutOfDeviceMemory), the buffer made first is
+    /// destroyed before the exception leaves.
     Buffer(Device& device, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUsage memory, std::string name);
-    ~Buffer();
-    Buffer(Buffer&& other) noexcept;
-    Buffer& operator=(Buffer&& other) noexcept;
-    Buffer(const Buffer&) = delete;
-    Buffer& operator=(const Buffer&) = delete;
+    ~Buffer() { reset(); }
+    Buffer(Buffer&&) noexcept = default;
+    Buffer& operator=(Buffer&&) noexcept = default;
 
-    VkBuffer handle() const { return mBuffer; }
-    VkDeviceSize size() const { return mSize; }
-    bool valid() const { return mBuffer != VK_NULL_HANDLE; }
+    VkBuffer handle() const { return mBuffer.get(); }
+    /// Bytes asked for (0 when empty).
+    VkDeviceSize size() const { return valid() ? mSize : 0; }
+    bool valid() const { return bool(mBuffer); }
     /// Persistently mapped pointer for host-visible buffers, else null.
-    void* mapped() const { return mMapped; }
+    void* mapped() const { return valid() ? mMapped : nullptr; }
 
     /// Copies `bytes` to the buffer at `offset`: directly when mapped, through
     /// a staging buffer and a blocking submit otherwise (load time only).
@@ -44,17 +48,21 @@ public:
         upload(std::as_bytes(items), offset);
     }
 
+    /// A host-visible transfer source named `name` holding a copy of `bytes`
+    /// (non-empty): the staging of a load-time upload.
+    static Buffer staging(Device& device, std::span<const std::byte> bytes, std::string name);
+
     /// Releases now; the caller guarantees the GPU is done with it.
     void reset();
     /// Releases once the frame now recording has retired.
     void deferredReset();
 
 private:
-    Device* mDevice = nullptr;
-    VkBuffer mBuffer = VK_NULL_HANDLE;
-    VkDeviceMemory mMemory = VK_NULL_HANDLE;
+    // In the order they are released in, by reset() and by a move
+    // assignment's member-wise moves: the buffer, then its memory.
+    UniqueHandle<VkBuffer, VK_OBJECT_TYPE_BUFFER> mBuffer;
+    DeviceMemory mMemory;
     VkDeviceSize mSize = 0;
-    VkDeviceSize mAllocationSize = 0;
     void* mMapped = nullptr;
 };
 

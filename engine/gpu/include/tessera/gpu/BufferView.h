@@ -4,6 +4,8 @@
 /// texel buffer (D3D10's Buffer<float4>.Load, and the closest thing Vulkan
 /// has to D3D9's vertex texture fetch from an R2VB buffer).
 
+#include "tessera/gpu/UniqueHandle.h"
+
 #include <vulkan/vulkan.h>
 
 #include <string>
@@ -20,18 +22,12 @@ public:
     /// buffer needs a texel-buffer usage bit for that format.
     BufferView(Device& device, const Buffer& buffer, VkFormat format, VkDeviceSize offset, VkDeviceSize range,
                std::string name);
-    ~BufferView();
-    BufferView(BufferView&& other) noexcept;
-    BufferView& operator=(BufferView&& other) noexcept;
-    BufferView(const BufferView&) = delete;
-    BufferView& operator=(const BufferView&) = delete;
 
-    VkBufferView handle() const { return mView; }
-    bool valid() const { return mView != VK_NULL_HANDLE; }
+    VkBufferView handle() const { return mView.get(); }
+    bool valid() const { return bool(mView); }
 
 private:
-    Device* mDevice = nullptr;
-    VkBufferView mView = VK_NULL_HANDLE;
+    UniqueHandle<VkBufferView, VK_OBJECT_TYPE_BUFFER_VIEW> mView;
 };
 
 } // namespace tessera::gpu

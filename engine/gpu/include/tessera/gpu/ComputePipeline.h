@@ -2,6 +2,8 @@
 /// @file ComputePipeline.h
 /// A named compute pipeline from embedded SPIR-V.
 
+#include "tessera/gpu/UniqueHandle.h"
+
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -17,18 +19,12 @@ class ComputePipeline {
 public:
     ComputePipeline() = default;
     ComputePipeline(Device& device, const PipelineLayout& layout, std::span<const uint32_t> spirv, std::string name);
-    ~ComputePipeline();
-    ComputePipeline(ComputePipeline&& other) noexcept;
-    ComputePipeline& operator=(ComputePipeline&& other) noexcept;
-    ComputePipeline(const ComputePipeline&) = delete;
-    ComputePipeline& operator=(const ComputePipeline&) = delete;
 
-    VkPipeline handle() const { return mPipeline; }
-    bool valid() const { return mPipeline != VK_NULL_HANDLE; }
+    VkPipeline handle() const { return mPipeline.get(); }
+    bool valid() const { return bool(mPipeline); }
 
 private:
-    Device* mDevice = nullptr;
-    VkPipeline mPipeline = VK_NULL_HANDLE;
+    UniqueHandle<VkPipeline, VK_OBJECT_TYPE_PIPELINE> mPipeline;
 };
 
 } // namespace tessera::gpu

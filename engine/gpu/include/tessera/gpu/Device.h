@@ -7,6 +7,7 @@
 #include "tessera/device/DeviceFeatures.h"
 #include "tessera/core/Result.h"
 #include "tessera/gpu/Instance.h"
+#include "tessera/gpu/UniqueHandle.h"
 
 #include <vulkan/vulkan.h>
 
@@ -14,6 +15,9 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <type_traits>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace tessera::gpu {
@@ -77,13 +81,16 @@ public:
     /// Index of a memory type with `required` properties among `typeBits`;
     /// UINT32_MAX when none.
     uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required) const;
-    /// Allocates device memory and accounts for it in allocatedBytes().
-    /// Throws OutOfDeviceMemory when the driver refuses (out of device or
-    /// host memory) or when the allocation would take allocatedBytes() past
-    /// the cap of setMemoryCap; the message names `name`, the size and the
+    /// Allocates device memory, named `name`.memory, and accounts for it in
+    /// allocatedBytes() until the returned handle frees it. Throws
+    /// OutOfDeviceMemory when the driver refuses (out of device or host
+    /// memory) or when the allocation would take allocatedBytes() past the
+    /// cap of setMemoryCap; the message names `name`, the size and the
     /// memory in use.
-    VkDeviceMemory allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags flags, const std::string& name);
-    void free(VkDeviceMemory memory, VkDeviceSize size);
+    DeviceMemory allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags flags, const std::string& name);
+    /// Frees memory from allocate and takes it off allocatedBytes() (what
+    /// DeviceMemory does when it goes).
+    void free(VkDeviceMemory memory);
     /// Device memory currently allocated through this device.
     uint64_t allocatedBytes() const { return mAllocatedBytes.load(); }
     /// The most allocatedBytes() has been since the device was created.
@@ -102,12 +109,22 @@ public:
     void failAllocation(uint64_t index) { mFailingAllocation = index; }
 
     /// Records `record` into a one-shot command buffer, submits it and waits.
-    /// For load-time uploads only; per-frame work goes through FrameContext.
+    /// Only for what blocks outside a frame: load-time uploads
+    /// (Buffer::upload, Image::upload) and readBack (Readback.h); per-frame
+    /// work goes through FrameContext.
     void submitImmediate(const std::function<void(VkCommandBuffer)>& record, const char* label);
 
     /// Runs `destroy` once the GPU can no longer use what it frees: after the
     /// frame slot now recording has retired (or at waitIdle/destruction).
     void deferDestroy(std::function<void()> destroy);
+    /// Takes `object` (an RAII owner of GPU objects: a Buffer, an Image, a
+    /// unique_ptr to a backend's resources) and destroys it once the frame
+    /// slot now recording has retired; what `object` was is left moved-from.
+    template <class T>
+    void deferRelease(T&& object) {
+        auto* doomed = new std::decay_t<T>(std::forward<T>(object));
+        deferDestroy([doomed] { delete doomed; });
+    }
     /// Called by the frame scheduler when `slot`'s fence has signalled.
     void retireSlot(uint32_t slot);
     /// The frame slot being recorded; set by the frame scheduler.
@@ -132,6 +149,7 @@ private:
     uint64_t mMemoryCap = 0;
     uint64_t mAllocationCount = 0;
     uint64_t mFailingAllocation = UINT64_MAX;
+    std::unordered_map<VkDeviceMemory, VkDeviceSize> mAllocationSizes; ///< for free's accounting
     uint32_t mCurrentSlot = 0;
     std::vector<std::function<void()>> mDeferred[kFramesInFlight];
 };

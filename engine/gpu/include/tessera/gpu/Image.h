@@ -3,6 +3,8 @@
 /// A named 2D VkImage with one view and its own memory, plus the layout
 /// transition helper every pass uses.
 
+#include "tessera/gpu/UniqueHandle.h"
+
 #include <vulkan/vulkan.h>
 
 #include <cstddef>
@@ -32,24 +34,25 @@ struct ImageDesc {
 class Image {
 public:
     Image() = default;
+    /// Makes and names the image, its memory ("`name`.memory") and its views.
+    /// When the memory cannot be had (OutOfDeviceMemory), the image made
+    /// first is destroyed before the exception leaves.
     Image(Device& device, const ImageDesc& desc);
-    ~Image();
-    Image(Image&& other) noexcept;
-    Image& operator=(Image&& other) noexcept;
-    Image(const Image&) = delete;
-    Image& operator=(const Image&) = delete;
+    ~Image() { reset(); }
+    Image(Image&&) noexcept = default;
+    Image& operator=(Image&&) noexcept = default;
 
-    VkImage handle() const { return mImage; }
-    VkImageView view() const { return mView; }
+    VkImage handle() const { return mImage.get(); }
+    VkImageView view() const { return mView.get(); }
     /// The view in ImageDesc::aliasFormat (VK_NULL_HANDLE without one).
-    VkImageView aliasView() const { return mAliasView; }
+    VkImageView aliasView() const { return mAliasView.get(); }
     VkFormat format() const { return mDesc.format; }
     uint32_t width() const { return mDesc.width; }
     uint32_t height() const { return mDesc.height; }
     uint32_t mipLevels() const { return mDesc.mipLevels; }
     uint32_t arrayLayers() const { return mDesc.arrayLayers; }
     VkImageAspectFlags aspect() const;
-    bool valid() const { return mImage != VK_NULL_HANDLE; }
+    bool valid() const { return bool(mImage); }
 
     /// Uploads mip 0 from tightly packed texels and leaves the image in
     /// `finalLayout`. Blocking; load time only.
@@ -64,13 +67,13 @@ public:
     void deferredReset();
 
 private:
-    Device* mDevice = nullptr;
     ImageDesc mDesc;
-    VkImage mImage = VK_NULL_HANDLE;
-    VkImageView mView = VK_NULL_HANDLE;
-    VkImageView mAliasView = VK_NULL_HANDLE;
-    VkDeviceMemory mMemory = VK_NULL_HANDLE;
-    VkDeviceSize mAllocationSize = 0;
+    // In the order they are released in, by reset() and by a move
+    // assignment's member-wise moves: the views, the image, its memory.
+    UniqueHandle<VkImageView, VK_OBJECT_TYPE_IMAGE_VIEW> mAliasView;
+    UniqueHandle<VkImageView, VK_OBJECT_TYPE_IMAGE_VIEW> mView;
+    UniqueHandle<VkImage, VK_OBJECT_TYPE_IMAGE> mImage;
+    DeviceMemory mMemory;
 };
 
 /// Records a full-image layout transition with synchronization2 barriers.

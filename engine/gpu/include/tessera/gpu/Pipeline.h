@@ -2,6 +2,8 @@
 /// @file Pipeline.h
 /// Graphics pipelines for dynamic rendering, described by a plain struct.
 
+#include "tessera/gpu/UniqueHandle.h"
+
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -47,18 +49,12 @@ class Pipeline {
 public:
     Pipeline() = default;
     Pipeline(Device& device, const GraphicsPipelineDesc& desc);
-    ~Pipeline();
-    Pipeline(Pipeline&& other) noexcept;
-    Pipeline& operator=(Pipeline&& other) noexcept;
-    Pipeline(const Pipeline&) = delete;
-    Pipeline& operator=(const Pipeline&) = delete;
 
-    VkPipeline handle() const { return mPipeline; }
-    bool valid() const { return mPipeline != VK_NULL_HANDLE; }
+    VkPipeline handle() const { return mPipeline.get(); }
+    bool valid() const { return bool(mPipeline); }
 
 private:
-    Device* mDevice = nullptr;
-    VkPipeline mPipeline = VK_NULL_HANDLE;
+    UniqueHandle<VkPipeline, VK_OBJECT_TYPE_PIPELINE> mPipeline;
 };
 
 } // namespace tessera::gpu

@@ -7,6 +7,8 @@
 /// lifetimes to manage. It plays the role of Granite's automatic descriptor
 /// management at a fraction of the code, and every Tessera device has it.
 
+#include "tessera/gpu/UniqueHandle.h"
+
 #include <vulkan/vulkan.h>
 
 #include <initializer_list>
@@ -33,20 +35,17 @@ public:
                    VkShaderStageFlags pushConstantStages, std::string name)
         : PipelineLayout(device, std::span<const BindingDesc>(bindings.begin(), bindings.size()), pushConstantBytes,
                          pushConstantStages, std::move(name)) {}
-    ~PipelineLayout();
-    PipelineLayout(PipelineLayout&& other) noexcept;
-    PipelineLayout& operator=(PipelineLayout&& other) noexcept;
-    PipelineLayout(const PipelineLayout&) = delete;
-    PipelineLayout& operator=(const PipelineLayout&) = delete;
 
-    VkPipelineLayout handle() const { return mLayout; }
-    VkDescriptorSetLayout setLayout() const { return mSetLayout; }
+    VkPipelineLayout handle() const { return mLayout.get(); }
+    VkDescriptorSetLayout setLayout() const { return mSetLayout.get(); }
     VkShaderStageFlags pushConstantStages() const { return mPushStages; }
 
 private:
-    Device* mDevice = nullptr;
-    VkDescriptorSetLayout mSetLayout = VK_NULL_HANDLE;
-    VkPipelineLayout mLayout = VK_NULL_HANDLE;
+    // The destructor releases the pipeline layout first, then its set
+    // layout; a move assignment replaces them the other way round, which
+    // Vulkan allows as well (a set layout may go once a layout is made).
+    UniqueHandle<VkDescriptorSetLayout, VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT> mSetLayout;
+    UniqueHandle<VkPipelineLayout, VK_OBJECT_TYPE_PIPELINE_LAYOUT> mLayout;
     VkShaderStageFlags mPushStages = 0;
 };
 

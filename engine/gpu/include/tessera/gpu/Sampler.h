@@ -2,6 +2,8 @@
 /// @file Sampler.h
 /// A named VkSampler.
 
+#include "tessera/gpu/UniqueHandle.h"
+
 #include <vulkan/vulkan.h>
 
 #include <string>
@@ -15,17 +17,11 @@ public:
     Sampler() = default;
     /// Linear or nearest filtering with the given addressing on all axes.
     Sampler(Device& device, VkFilter filter, VkSamplerAddressMode address, std::string name);
-    ~Sampler();
-    Sampler(Sampler&& other) noexcept;
-    Sampler& operator=(Sampler&& other) noexcept;
-    Sampler(const Sampler&) = delete;
-    Sampler& operator=(const Sampler&) = delete;
 
-    VkSampler handle() const { return mSampler; }
+    VkSampler handle() const { return mSampler.get(); }
 
 private:
-    Device* mDevice = nullptr;
-    VkSampler mSampler = VK_NULL_HANDLE;
+    UniqueHandle<VkSampler, VK_OBJECT_TYPE_SAMPLER> mSampler;
 };
 
 } // namespace tessera::gpu

@@ -1,0 +1,52 @@
+#pragma once
+/// @file CrowdPipeline.h
+/// What the crowd's shared tier draws (CrowdMeshPass, EmulatedCrowdNearPass)
+/// are built from: a graphics pipeline over a CrowdDescriptors layout, with
+/// a vertex and a fragment stage, one vertex stream of one attribute and
+/// back faces culled, and its recording: the pipeline, the stream and the
+/// index buffer bound once, then per creature its descriptors pushed before
+/// its indirect draws.
+
+#include "common/CrowdDescriptors.h"
+#include "common/GpuCrowd.h"
+#include "tessera/gpu/FrameContext.h"
+#include "tessera/gpu/Pipeline.h"
+#include "tessera/gpu/PipelineLayout.h"
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+
+namespace tessera::backends {
+
+class CrowdPipeline {
+public:
+    /// The one vertex stream: per vertex or per instance, `stride` bytes,
+    /// one attribute of `format` at offset 0.
+    struct Stream {
+        uint32_t stride = 0;
+        VkVertexInputRate rate = VK_VERTEX_INPUT_RATE_VERTEX;
+        VkFormat format = VK_FORMAT_UNDEFINED;
+    };
+
+    CrowdPipeline() = default;
+    /// Named `name` (its layout `name`.layout), reading the bindings of `mode`.
+    CrowdPipeline(gpu::Device& device, CrowdDescriptors::Mode mode, std::span<const uint32_t> vertex,
+                  std::span<const uint32_t> fragment, Stream stream, VkFrontFace frontFace, VkFormat colorFormat,
+                  VkFormat depthFormat, const std::string& name);
+
+    /// Records GPU pass `passName`: binds the pipeline, `stream` and
+    /// `indices` (uint32), then for each creature pushes its descriptors and
+    /// calls `draw(cmd, creature)`.
+    void record(gpu::FrameContext& frame, const char* passName, GpuCrowd& crowd, CrowdDescriptors& descriptors,
+                VkBuffer stream, VkBuffer indices,
+                const std::function<void(VkCommandBuffer cmd, uint32_t creature)>& draw) const;
+
+private:
+    gpu::Device* mDevice = nullptr;
+    gpu::PipelineLayout mLayout;
+    gpu::Pipeline mPipeline;
+};
+
+} // namespace tessera::backends

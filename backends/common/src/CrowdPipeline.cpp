@@ -1,0 +1,43 @@
+#include "common/CrowdPipeline.h"
+
+#include "tessera/gpu/Device.h"
+
+namespace tessera::backends {
+
+CrowdPipeline::CrowdPipeline(gpu::Device& device, CrowdDescriptors::Mode mode, std::span<const uint32_t> vertex,
+                             std::span<const uint32_t> fragment, Stream stream, VkFrontFace frontFace,
+                             VkFormat colorFormat, VkFormat depthFormat, const std::string& name)
+    : mDevice(&device), mLayout(CrowdDescriptors::layout(device, mode,
+                                                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                                                         name + ".layout")) {
+    gpu::GraphicsPipelineDesc desc;
+    desc.name = name;
+    desc.layout = &mLayout;
+    desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vertex}, {VK_SHADER_STAGE_FRAGMENT_BIT, fragment}};
+    desc.vertexBindings = {{0, stream.stride, stream.rate}};
+    desc.vertexAttributes = {{0, 0, stream.format, 0}};
+    desc.cullMode = VK_CULL_MODE_BACK_BIT;
+    desc.frontFace = frontFace;
+    desc.colorFormats = {colorFormat};
+    desc.depthFormat = depthFormat;
+    mPipeline = gpu::Pipeline(device, desc);
+}
+
+void CrowdPipeline::record(gpu::FrameContext& frame, const char* passName, GpuCrowd& crowd,
+                           CrowdDescriptors& descriptors, VkBuffer stream, VkBuffer indices,
+                           const std::function<void(VkCommandBuffer cmd, uint32_t creature)>& draw) const {
+    VkCommandBuffer cmd = frame.cmd();
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
+    gpu::PassScope pass(frame, passName);
+    const VkDeviceSize zero = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &stream, &zero);
+    vkCmdBindIndexBuffer(cmd, indices, 0, VK_INDEX_TYPE_UINT32);
+    for (uint32_t c = 0; c < crowd.creatures().size(); ++c) {
+        const auto writes = descriptors.writes(c);
+        mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0,
+                                           uint32_t(writes.size()), writes.data());
+        draw(cmd, c);
+    }
+}
+
+} // namespace tessera::backends
