@@ -1,10 +1,11 @@
 # What each long test costs, in seconds of one run of the whole suite at -j2
 # on a 2-core machine (lavapipe; other work beside it, so read them as
-# relative), so that ctest starts the longest first on a fresh clone, which has no times of a last run (Testing/Temporary/
-# CTestCostData.txt, which replaces these once it exists). Only the order
-# matters: a test missing here costs 0 and starts after these; a name that
-# no longer exists is ignored. Refresh from a ctest log with
-# tests/schedule/update_costs.py after tests change much.
+# relative), so that ctest starts the longest first on a fresh clone, which
+# has no times of a last run (Testing/Temporary/CTestCostData.txt, which
+# replaces these once it exists). Only the order matters: a test missing
+# here costs 0 and starts after these; a name that no longer exists is
+# ignored. Refresh from a ctest log with tests/schedule/update_costs.py after
+# tests change much.
 set_tests_properties([=[EveryBackend/TerrainCrack.NoHolesInAnyModeMetricOrLevel/streamout  # GetParam() = "streamout"]=] PROPERTIES COST 139)
 set_tests_properties([=[EveryBackend/CrowdNearCracks.NoHolesAtAnyLevel/hulldomain  # GetParam() = "hulldomain"]=] PROPERTIES COST 137)
 set_tests_properties([=[EveryBackend/TerrainCrack.NoHolesInAnyModeMetricOrLevel/r2vb  # GetParam() = "r2vb"]=] PROPERTIES COST 137)
