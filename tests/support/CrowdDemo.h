@@ -4,9 +4,8 @@
 /// keeps their runs short, and the crowd lines the demo prints.
 
 #include "CharacterDemo.h"
+#include "SmallTerrain.h"
 #include "TestFiles.h"
-
-#include "tessera/terrain/HeightMapIO.h"
 
 #include <gtest/gtest.h>
 
@@ -18,28 +17,14 @@
 
 namespace tessera::test {
 
-/// A 513 x 513 crop (2 km) of the middle of the build's content terrain, at
-/// its spacing: the same kind of ground, with a sixteenth of the cells, so
-/// Crowd::create solves its fields in a fraction of a second. Written once
-/// into the test output directory.
+/// The 2 km crop of the build's content terrain (SmallTerrain.h) in the
+/// test output directory, so Crowd::create solves its fields in a fraction of
+/// a second.
 inline std::string smallCrowdTerrain() {
-    constexpr uint32_t kSize = 513;
-    const std::filesystem::path out = testOutputDir("crowd") / "height_513.png";
-    if (std::filesystem::exists(out)) return out.string();
-    auto field = terrain::loadHeightMapPng(buildContentDir() / "terrain" / "height.png");
-    EXPECT_TRUE(field.ok()) << (field.ok() ? "" : field.error().message);
-    if (!field.ok()) return {};
-    const terrain::HeightField& h = field.value();
-    const uint32_t x0 = (h.width() - kSize) / 2, z0 = (h.height() - kSize) / 2;
-    std::vector<uint16_t> samples;
-    samples.reserve(size_t(kSize) * kSize);
-    for (uint32_t j = 0; j < kSize; ++j)
-        for (uint32_t i = 0; i < kSize; ++i) samples.push_back(h.samples()[size_t(z0 + j) * h.width() + x0 + i]);
-    const std::filesystem::path partial = out.string() + ".partial";
-    auto written = terrain::saveHeightMapPng16(partial, kSize, kSize, samples);
-    EXPECT_TRUE(written.ok()) << (written.ok() ? "" : written.error().message);
-    std::filesystem::rename(partial, out);
-    return out.string();
+    std::string error;
+    const std::string path = smallTerrainCrop(buildContentDir(), testOutputDir("crowd"), error);
+    EXPECT_FALSE(path.empty()) << error;
+    return path;
 }
 
 /// The number before `label` in the demo's closing crowd line ("crowd: 60

@@ -16,12 +16,11 @@ for tool in Xvfb xdotool; do
 done
 rm -rf "$out" && mkdir -p "$out" && cd "$out" || exit 1
 
-display=""
-for n in $(seq 87 140); do
-  if [ ! -e "/tmp/.X11-unix/X$n" ] && [ ! -e "/tmp/.X$n-lock" ]; then display=":$n"; break; fi
-done
-[ -n "$display" ] || { echo "FAIL: no free X display number"; exit 1; }
-Xvfb "$display" -screen 0 1024x768x24 -nolisten tcp >xvfb.log 2>&1 &
+# Xvfb picks a free display itself and says which once it accepts clients
+# (-displayfd): two runs starting together (two checkouts' suites on one
+# machine) can no longer both take the number that looked free.
+: >display.txt
+Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>display.txt >xvfb.log 2>&1 &
 xvfb=$!
 demo_pid=""
 cleanup() {
@@ -30,8 +29,9 @@ cleanup() {
   wait 2>/dev/null
 }
 trap cleanup EXIT
-export DISPLAY="$display"
-for _ in $(seq 100); do [ -e "/tmp/.X11-unix/X${display#:}" ] && break; sleep 0.1; done
+for _ in $(seq 100); do [ -s display.txt ] && break; sleep 0.1; done
+[ -s display.txt ] || { echo "FAIL: Xvfb did not start"; cat xvfb.log; exit 1; }
+export DISPLAY=":$(head -n 1 display.txt)"
 
 "$demo" --window --validation --backend r2vb --scene terrain --width 480 --height 270 --frames 1000000 \
   >demo.log 2>&1 &
