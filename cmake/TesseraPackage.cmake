@@ -26,10 +26,7 @@ foreach(library core subdiv assets gpu)
     install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/${library}/include/tessera DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/include/tessera ${PROJECT_SOURCE_DIR}/tools/cli/include/tessera
-    DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-# tessera-demo's flags: game_sample's headers (all of them tessera_demo_cli's).
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/game_sample/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tessera/demo
-    FILES_MATCHING PATTERN "*.h")
+    ${PROJECT_SOURCE_DIR}/game_sample/cli/include/tessera DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 # Shared GLSL for games that write their own passes (compile with
 # -I<prefix>/share/tessera/glsl -I<prefix>/include).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/shaders/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tessera/glsl FILES_MATCHING PATTERN "*.glsl")

@@ -1,6 +1,6 @@
 // tessera-demo: the crowd/terrain demo's entry point.
-#include "CommandLine.h"
-#include "SettingFlags.h"
+#include "tessera/demo/CommandLine.h"
+#include "tessera/demo/SettingFlags.h"
 #include "tessera/core/Log.h"
 #include "tessera/runtime/Reporter.h"
 #include "tessera/runtime/Runner.h"

@@ -2,7 +2,7 @@
 // file under tests/fuzz/regressions/<harness>/ once crashed, leaked or hung
 // its harness. Fed through the same entry point, it must now give a value
 // or an error with a message, in the ordinary release build.
-#include "CommandLine.h"
+#include "tessera/demo/CommandLine.h"
 #include "tessera/assets/GltfLoader.h"
 #include "tessera/subdiv/ObjShape.h"
 #include "tessera/terrain/HeightMapIO.h"

@@ -13,7 +13,8 @@
 #             file belongs to the library of its folder; an include belongs
 #             to the library of its include root (tessera/<module>/ of the
 #             core's modules, tessera/subdiv/, tessera/assets/,
-#             tessera/runtime/, tessera/cli/) or of the file it reaches:
+#             tessera/runtime/, tessera/cli/, tessera/demo/) or of the
+#             file it reaches:
 #               engine/core      (tessera_core)    nothing but itself
 #               engine/subdiv    (tessera_subdiv)  core
 #               engine/assets    (tessera_assets)  core
@@ -22,6 +23,7 @@
 #               backends/null                      core, subdiv
 #               runtime          (tessera_runtime) core, subdiv, assets
 #               tools/cli        (tessera_cli)     core
+#               game_sample/cli  (tessera_demo_cli) core, cli, runtime
 #             Uses of the GPU layer and of backends/common have rules of
 #             their own ([gpu-layer], [backend-header]) and are not judged
 #             twice here.
@@ -195,6 +197,7 @@ set(mayUse_gpu core gpu)
 set(mayUse_backend core subdiv)
 set(mayUse_runtime core subdiv assets runtime)
 set(mayUse_cli core cli)
+set(mayUse_demo core cli runtime demo)
 
 function(library_of_file file outVar)
     set(library "")
@@ -206,6 +209,8 @@ function(library_of_file file outVar)
         set(library runtime)
     elseif(file MATCHES "^tools/cli/")
         set(library cli)
+    elseif(file MATCHES "^game_sample/cli/")
+        set(library demo)
     endif()
     set(${outVar} "${library}" PARENT_SCOPE)
 endfunction()
@@ -220,9 +225,11 @@ function(library_of_include include resolved outVar)
         set(library runtime)
     elseif(resolved MATCHES "^tools/cli/")
         set(library cli)
+    elseif(resolved MATCHES "^game_sample/cli/")
+        set(library demo)
     elseif(resolved STREQUAL "" AND include MATCHES "^tessera/(${coreModuleRegex})/")
         set(library core)
-    elseif(resolved STREQUAL "" AND include MATCHES "^tessera/(subdiv|assets|runtime|cli)/")
+    elseif(resolved STREQUAL "" AND include MATCHES "^tessera/(subdiv|assets|runtime|cli|demo)/")
         set(library "${CMAKE_MATCH_1}")
     endif()
     set(${outVar} "${library}" PARENT_SCOPE)

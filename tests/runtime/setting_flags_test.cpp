@@ -2,7 +2,7 @@
 // reports: every word the runtime uses for a setting has the demo's flag in
 // game_sample/SettingFlags.cpp, a message about a setting comes out with the
 // flag in its place, and advice names settings the host's way.
-#include "SettingFlags.h"
+#include "tessera/demo/SettingFlags.h"
 #include "tessera/runtime/Options.h"
 #include "tessera/runtime/Reporter.h"
 #include "tessera/runtime/Settings.h"

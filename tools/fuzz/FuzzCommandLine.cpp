@@ -1,7 +1,7 @@
 // tessera-demo's command line (every flag, its value checks and the checks
 // between flags) on arbitrary arguments: the input split at newlines and
 // NULs into argv.
-#include "CommandLine.h"
+#include "tessera/demo/CommandLine.h"
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
-#include "CommandLine.h"
+#include "tessera/demo/CommandLine.h"
 
-#include "DemoFlags.h"
-#include "FlagValues.h"
+#include "tessera/demo/DemoFlags.h"
+#include "tessera/demo/FlagValues.h"
 
 #include "tessera/cli/CameraPoseText.h"
 #include "tessera/cli/FeatureMaskText.h"

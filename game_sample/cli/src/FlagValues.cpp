@@ -1,4 +1,4 @@
-#include "FlagValues.h"
+#include "tessera/demo/FlagValues.h"
 
 #include "tessera/cli/NumberList.h"
 #include "tessera/cli/Validators.h"

@@ -1,4 +1,4 @@
-#include "SettingFlags.h"
+#include "tessera/demo/SettingFlags.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "DemoFlags.h"
+#include "tessera/demo/DemoFlags.h"
 
 #include "tessera/cli/Validators.h"
 #include "tessera/shaders/CrowdLod.h"
