@@ -19,8 +19,9 @@
 #               engine/subdiv    (tessera_subdiv)  core
 #               engine/assets    (tessera_assets)  core
 #               engine/gpu       (tessera_gpu)     core
-#               backends/common, backends/<name>   core, subdiv
-#               backends/null                      core, subdiv
+#               backends/common, backends/<name>   core
+#               backends/null                      core, subdiv (it
+#                                                  refines surfaces on the CPU)
 #               runtime          (tessera_runtime) core, subdiv, assets
 #               tools/cli        (tessera_cli)     core
 #               game_sample/cli  (tessera_demo_cli) core, cli, runtime
@@ -194,7 +195,8 @@ set(mayUse_core core)
 set(mayUse_subdiv core subdiv)
 set(mayUse_assets core assets)
 set(mayUse_gpu core gpu)
-set(mayUse_backend core subdiv)
+set(mayUse_backend core)
+set(mayUse_nullbackend core subdiv)
 set(mayUse_runtime core subdiv assets runtime)
 set(mayUse_cli core cli)
 set(mayUse_demo core cli runtime demo)
@@ -203,6 +205,8 @@ function(library_of_file file outVar)
     set(library "")
     if(file MATCHES "^engine/(core|subdiv|assets|gpu)/")
         set(library "${CMAKE_MATCH_1}")
+    elseif(file MATCHES "^backends/null/")
+        set(library nullbackend)
     elseif(file MATCHES "^backends/")
         set(library backend)
     elseif(file MATCHES "^runtime/")
@@ -323,7 +327,7 @@ foreach(file IN LISTS files)
             if(zone STREQUAL "runtime")
                 list(APPEND found "vulkan|the runtime reaches Vulkan only through the GPU layer's headers (tessera/gpu/...)")
             elseif(zone STREQUAL "null-backend")
-                list(APPEND found "vulkan|the null backend runs with no GPU and links tessera_core only")
+                list(APPEND found "vulkan|the null backend runs with no GPU and links no GPU code")
             elseif(NOT zone MATCHES "^(gpu|backend|gpu-test)$")
                 list(APPEND found "vulkan|only the GPU layer, the GPU backends and the GPU tests include Vulkan")
             endif()
@@ -331,7 +335,7 @@ foreach(file IN LISTS files)
         # [gpu-layer]
         if(include MATCHES "(^|/)tessera/gpu/" OR resolved MATCHES "^engine/gpu/")
             if(zone STREQUAL "null-backend")
-                list(APPEND found "gpu-layer|the null backend runs with no GPU and links tessera_core only")
+                list(APPEND found "gpu-layer|the null backend runs with no GPU and links no GPU code")
             elseif(NOT zone MATCHES "^(gpu|backend|gpu-test|runtime)$")
                 list(APPEND found "gpu-layer|only the runtime, the GPU backends and the GPU tests use the GPU layer, the rest stays Vulkan-free")
             endif()
