@@ -11,8 +11,8 @@
 # uses (CLI11), and Tessera::demo_cli, tessera-demo's own flags into
 # runtime::Options (tessera/demo/CommandLine.h) with its names for the
 # runtime's settings (tessera/demo/SettingFlags.h). examples/embed is such a
-# game; docs/EMBEDDING.md and the README's "Using Tessera in your game"
-# describe it.
+# game; the README's "Using Tessera in your game"
+# describes it.
 include(CMakePackageConfigHelpers)
 
 install(TARGETS tessera_core tessera_gpu tessera_assets tessera_subdiv tessera_runtime tessera_cli tessera_demo_cli
