@@ -1,5 +1,5 @@
 # check_layering.cmake: Tessera's layering, checked rather than promised
-# (docs/ARCHITECTURE.md, "Layers"). Scans every C and C++ source file under a
+# (docs/ARCHITECTURE.md, "Layers and libraries"). Scans every C and C++ source file under a
 # tree and fails, naming file:line and the rule, where a file includes what
 # its layer may not, or records a barrier by hand:
 #
@@ -319,7 +319,7 @@ foreach(file IN LISTS files)
             library_of_include("${include}" "${resolved}" includeLibrary)
             if(NOT includeLibrary STREQUAL "" AND NOT includeLibrary IN_LIST mayUse_${fileLibrary})
                 list(JOIN mayUse_${fileLibrary} ", " usable)
-                list(APPEND found "library-order|${fileLibrary} is below ${includeLibrary}: it may use ${usable} only (docs/ARCHITECTURE.md, Layers)")
+                list(APPEND found "library-order|${fileLibrary} is below ${includeLibrary}: it may use ${usable} only (docs/ARCHITECTURE.md, Layers and libraries)")
             endif()
         endif()
         # [vulkan]

@@ -12,7 +12,7 @@
 /// resource code under error plumbing. So it is treated like std::bad_alloc:
 /// Device::allocate throws, every GPU object releases what it made as the
 /// stack unwinds (RAII; the backend contract requires it, docs/ARCHITECTURE.md
-/// "Errors"), and the host catches it at the top of the run, prints what()
+/// "The backend contract"), and the host catches it at the top of the run, prints what()
 /// and exits non-zero. The validation layer's object tracking then finds
 /// nothing left behind (tests/runtime/device_memory_exhaustion_test.cpp).
 ///
