@@ -23,8 +23,8 @@ public:
     HulldomainCrowdPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat);
 
     /// Outside the main pass: resets the indirect commands, culls and bins
-    /// (GPU pass crowd.cull), skins the near slots (crowd.skin), and copies
-    /// the commands for the frame report.
+    /// (GPU pass crowd.cull) and skins the near slots (crowd.skin); the
+    /// commands' copy for the frame report is BasicCharacterBackend's.
     void recordCompute(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
                        uint32_t instanceCount);
     /// Inside the main pass: each tier's draws (crowd.near, crowd.middle, crowd.far).

@@ -9,7 +9,7 @@
 ///                       and its skin pass's indirect draw;
 ///   crowd.nearCommands  two points per (creature, slot): the 8-word indexed
 ///                       draw command, copied into crowd.nearCommands();
-///   crowd.nearSkin      per slot, an indirect point draw of its creature's
+///   crowd.skin          per slot, an indirect point draw of its creature's
 ///                       cage from the crowd's vertex stream: each vertex
 ///                       skinned from the baked clip and compressed into its
 ///                       texel, copied into crowd.nearCages() (the R2VB step).

@@ -8,8 +8,11 @@
 /// commands and triangle patterns, and a ring of per-frame instance buffers.
 /// Each backend's culling and binning technique writes the lists, commands
 /// and slots through the usage it names at creation (storage, transform
-/// feedback or transfer); the LOD state is the technique's own, with the
-/// rest of what the technique keeps per crowd, in its TechniqueExtension.
+/// feedback or transfer). The per-agent LOD state (crowd.lodState) is here
+/// for a technique that updates it in place (hulldomain's compute); one
+/// that cannot write it in place (streamout's stream-out, r2vb's render
+/// targets) keeps its own copies,
+/// with the rest of what it keeps per crowd, in its TechniqueExtension.
 
 #include "common/TechniqueExtension.h"
 #include "tessera/shaders/CrowdInstance.h"
