@@ -30,7 +30,10 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/include/tessera ${PROJECT_SOURCE
 # Shared GLSL for games that write their own passes (compile with
 # -I<prefix>/share/tessera/glsl -I<prefix>/include).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/engine/shaders/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tessera/glsl FILES_MATCHING PATTERN "*.glsl")
-install(DIRECTORY ${PROJECT_BINARY_DIR}/content/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tessera/content OPTIONAL)
+# ... with the one they include that the build generates (OpenSubdiv's patch basis, tools/osdglsl).
+install(FILES ${TESSERA_GENERATED_GLSL_DIR}/osd_patch_basis.glsl DESTINATION ${CMAKE_INSTALL_DATADIR}/tessera/glsl)
+install(DIRECTORY ${PROJECT_BINARY_DIR}/content/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tessera/content OPTIONAL
+    PATTERN CMakeFiles EXCLUDE PATTERN "*.cmake" EXCLUDE)
 install(EXPORT TesseraTargets NAMESPACE Tessera:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/Tessera)
 
 set(TESSERA_PACKAGE_PLUGIN_DIR ${CMAKE_INSTALL_LIBDIR}/tessera)

@@ -1,9 +1,10 @@
-# tessera_add_backend_plugin(<name> SOURCES ...): builds backend plugin <name>
+# tessera_add_backend_plugin(<name> SOURCES ... [LIBRARIES ...] [NO_INSTALL]):
+# builds backend plugin <name>
 # as the shared module tessera_backend_<name>.so in <libdir>/tessera/, the
 # folder the plugin loader searches next to libtessera_core.so. Only the entry point is
 # exported (hidden visibility), so plugins cannot clash with each other.
 function(tessera_add_backend_plugin name)
-    cmake_parse_arguments(ARG "" "" "SOURCES;LIBRARIES" ${ARGN})
+    cmake_parse_arguments(ARG "NO_INSTALL" "" "SOURCES;LIBRARIES" ${ARGN})
     set(target tessera_backend_${name})
     add_library(${target} MODULE ${ARG_SOURCES})
     set_target_properties(${target} PROPERTIES
@@ -17,6 +18,8 @@ function(tessera_add_backend_plugin name)
     target_link_libraries(${target} PRIVATE ${ARG_LIBRARIES})
     target_link_options(${target} PRIVATE -Wl,--no-undefined)
     tessera_set_warnings(${target})
-    install(TARGETS ${target} LIBRARY DESTINATION ${TESSERA_PLUGIN_INSTALL_DIR})
+    if(NOT ARG_NO_INSTALL)
+        install(TARGETS ${target} LIBRARY DESTINATION ${TESSERA_PLUGIN_INSTALL_DIR})
+    endif()
     set_property(GLOBAL APPEND PROPERTY TESSERA_BACKEND_PLUGINS ${target})
 endfunction()

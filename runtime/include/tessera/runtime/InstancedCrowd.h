@@ -1,6 +1,7 @@
 #pragma once
 /// @file InstancedCrowd.h
-/// The crowd scene drawn as one instanced crowd (Backend::drawCrowd): the
+/// A population drawn as one instanced crowd (Backend::drawCrowd): the
+/// crowd scene's agents, or the characters scene's (CharacterCrowd); the
 /// creatures' clips baked once, every agent an instance each frame, and the
 /// LOD manager's parameters (its budget's cuts) for the backend's GPU
 /// culling and binning. No palette or pose per agent on the CPU.

@@ -188,8 +188,9 @@ struct Options {
     /// --bench terrain (the Table 2 benchmark), characters (two-pass vs
     /// single-pass, amplification, Table 1, compression error), crowd (the
     /// instanced crowd's GPU passes, frame times, tiers and memory per crowd
-    /// size and backend) or crowd-sim (the crowd simulation's step time,
-    /// memory and behaviour; no GPU) instead of the flythrough.
+    /// size and backend), crowd-sim (the crowd simulation's step time,
+    /// memory and behaviour; no GPU) or subdiv (the subdivision surfaces'
+    /// levels, triangles and passes per backend) instead of the flythrough.
     std::string bench;
     std::string benchOut;               ///< --out FILE (default: stdout)
     /// --out-dir DIR: where --bench writes one Chrome trace per backend

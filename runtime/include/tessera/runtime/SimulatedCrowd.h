@@ -1,9 +1,10 @@
 #pragma once
 /// @file SimulatedCrowd.h
 /// The crowd scene's population: thousands of agents of the crowd simulation
-/// (crowd::Crowd) wandering between goals on the terrain, of which the
-/// nearest in view are drawn as the generated creatures through the
-/// character path (one draw each), until instanced crowd rendering lands.
+/// (crowd::Crowd) wandering between goals on the terrain, drawn as one
+/// instanced crowd (InstancedCrowd) on a backend that draws crowds, or,
+/// on one that does not, the nearest in view through the character path
+/// (one draw each).
 
 #include "tessera/runtime/CameraOrbit.h"
 #include "tessera/runtime/CharacterAssets.h"
