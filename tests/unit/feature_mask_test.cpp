@@ -15,6 +15,9 @@ DeviceFeatures everything() {
     f.tessellationShader = f.geometryShader = f.transformFeedback = f.pipelineStatistics = true;
     f.timestamps = f.fillModeNonSolid = f.vertexStores = f.multiDrawIndirect = true;
     f.maxTessellationLevel = 64;
+    f.meshShader = f.meshShaderQueries = true;
+    f.maxMeshOutputVertices = f.maxMeshOutputPrimitives = f.maxMeshWorkGroupInvocations = 256;
+    f.maxTaskPayloadSize = 16384;
     return f;
 }
 
@@ -34,15 +37,28 @@ TEST(FeatureMask, HidesExactlyTheNamedFeatures) {
 
 TEST(FeatureMask, EveryListedNameParsesAndAnEmptyListHidesNothing) {
     auto all = parseFeatureMask("tessellation,geometry,transform-feedback,pipeline-statistics,timestamps,wireframe,"
-                                "vertex-stores,multi-draw-indirect");
+                                "vertex-stores,multi-draw-indirect,mesh-shader");
     ASSERT_TRUE(all) << all.error().message;
     DeviceFeatures f = everything();
     applyFeatureMask(all.value(), f);
     EXPECT_FALSE(f.tessellationShader || f.geometryShader || f.transformFeedback || f.pipelineStatistics ||
-                 f.timestamps || f.fillModeNonSolid || f.vertexStores || f.multiDrawIndirect);
+                 f.timestamps || f.fillModeNonSolid || f.vertexStores || f.multiDrawIndirect || f.meshShader);
     auto none = parseFeatureMask("");
     ASSERT_TRUE(none);
     EXPECT_TRUE(none.value().empty());
+}
+
+TEST(FeatureMask, HidingMeshShadersHidesTheirQueriesAndLimits) {
+    auto mask = parseFeatureMask("mesh-shader");
+    ASSERT_TRUE(mask) << mask.error().message;
+    DeviceFeatures f = everything();
+    applyFeatureMask(mask.value(), f);
+    EXPECT_FALSE(f.meshShader || f.meshShaderQueries);
+    EXPECT_EQ(f.maxMeshOutputVertices + f.maxMeshOutputPrimitives + f.maxMeshWorkGroupInvocations +
+                  f.maxTaskPayloadSize,
+              0u);
+    EXPECT_TRUE(f.tessellationShader && f.pipelineStatistics) << "nothing else hidden";
+    EXPECT_EQ(f.maxTessellationLevel, 64u);
 }
 
 TEST(FeatureMask, AnUnknownNameIsRefusedWithTheKnownOnes) {

@@ -29,6 +29,8 @@ void BasicTerrainBackend::checkRequirements(const device::DeviceFeatures* device
     if (caps.usesGeometryShaders && !device->geometryShader) caps.missing.push_back("geometry shaders (geometryShader)");
     if (caps.usesTransformFeedback && !device->transformFeedback)
         caps.missing.push_back("transform feedback (VK_EXT_transform_feedback)");
+    if (caps.usesMeshShaders && !device->meshShader)
+        caps.missing.push_back("task and mesh shaders (VK_EXT_mesh_shader)");
     if (caps.tessellation == TessellationPath::Emulated && !device->multiDrawIndirect)
         caps.missing.push_back("indirect draws with many commands and a first instance (multiDrawIndirect, "
                                "drawIndirectFirstInstance)");

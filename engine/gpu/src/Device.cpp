@@ -30,7 +30,7 @@ Fn load(VkDevice device, const char* name) {
 }
 
 /// The extension entry points Tessera calls, loaded once for `device`.
-DeviceFunctions loadFunctions(VkInstance instance, VkDevice device, bool transformFeedback) {
+DeviceFunctions loadFunctions(VkInstance instance, VkDevice device, const device::DeviceFeatures& enabled) {
     DeviceFunctions fn;
     fn.cmdPushDescriptorSet = load<PFN_vkCmdPushDescriptorSetKHR>(device, "vkCmdPushDescriptorSetKHR");
     // Debug-utils entry points come from the instance extension; the loader
@@ -43,12 +43,18 @@ DeviceFunctions loadFunctions(VkInstance instance, VkDevice device, bool transfo
         vkGetInstanceProcAddr(instance, "vkCmdEndDebugUtilsLabelEXT"));
     fn.cmdInsertLabel = reinterpret_cast<PFN_vkCmdInsertDebugUtilsLabelEXT>(
         vkGetInstanceProcAddr(instance, "vkCmdInsertDebugUtilsLabelEXT"));
-    if (transformFeedback) {
+    if (enabled.transformFeedback) {
         fn.cmdBindTransformFeedbackBuffers =
             load<PFN_vkCmdBindTransformFeedbackBuffersEXT>(device, "vkCmdBindTransformFeedbackBuffersEXT");
         fn.cmdBeginTransformFeedback = load<PFN_vkCmdBeginTransformFeedbackEXT>(device, "vkCmdBeginTransformFeedbackEXT");
         fn.cmdEndTransformFeedback = load<PFN_vkCmdEndTransformFeedbackEXT>(device, "vkCmdEndTransformFeedbackEXT");
         fn.cmdDrawIndirectByteCount = load<PFN_vkCmdDrawIndirectByteCountEXT>(device, "vkCmdDrawIndirectByteCountEXT");
+    }
+    if (enabled.meshShader) {
+        fn.cmdDrawMeshTasks = load<PFN_vkCmdDrawMeshTasksEXT>(device, "vkCmdDrawMeshTasksEXT");
+        fn.cmdDrawMeshTasksIndirect = load<PFN_vkCmdDrawMeshTasksIndirectEXT>(device, "vkCmdDrawMeshTasksIndirectEXT");
+        fn.cmdDrawMeshTasksIndirectCount =
+            load<PFN_vkCmdDrawMeshTasksIndirectCountEXT>(device, "vkCmdDrawMeshTasksIndirectCountEXT");
     }
     return fn;
 }
@@ -98,11 +104,22 @@ Result<std::unique_ptr<Device>> Device::create(Instance& instance, const Physica
     // workgroup sizes with LocalSizeId, which needs it enabled.
     v13.maintenance4 = VK_TRUE;
     if (want.transformFeedback) v13.pNext = &xfb;
+    // Task and mesh stages where the device has them (and they are not
+    // hidden), so a hidden feature stays off for the validation layer too.
+    VkPhysicalDeviceMeshShaderFeaturesEXT mesh{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_FEATURES_EXT};
+    mesh.taskShader = VK_TRUE;
+    mesh.meshShader = VK_TRUE;
+    mesh.meshShaderQueries = want.meshShaderQueries;
+    if (want.meshShader) {
+        mesh.pNext = v13.pNext;
+        v13.pNext = &mesh;
+    }
     VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v13};
     features2.features = core;
 
     std::vector<const char*> extensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
     if (want.transformFeedback) extensions.push_back(VK_EXT_TRANSFORM_FEEDBACK_EXTENSION_NAME);
+    if (want.meshShader) extensions.push_back(VK_EXT_MESH_SHADER_EXTENSION_NAME);
     // The swapchain extension needs the instance's surface extension, which
     // only windowed runs enable.
     if (instance.windowingEnabled() && hasExtension(pd, VK_KHR_SWAPCHAIN_EXTENSION_NAME)) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
@@ -123,7 +140,7 @@ Result<std::unique_ptr<Device>> Device::create(Instance& instance, const Physica
         return fail(physical.features.deviceName, ": could not create the Vulkan device (", resultName(result), ")");
     vkGetDeviceQueue(device->mDevice, family, 0, &device->mQueue);
 
-    device->mFn = loadFunctions(instance.handle(), device->mDevice, want.transformFeedback);
+    device->mFn = loadFunctions(instance.handle(), device->mDevice, want);
     VkDevice d = device->mDevice;
 
     VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};

@@ -46,6 +46,20 @@ bool hasDeviceExtension(VkPhysicalDevice device, const char* name) {
     return std::any_of(exts.begin(), exts.end(), [&](const auto& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
 
+/// The mesh-shader limits of a device that has both stages. Its queries
+/// count only where pipeline statistics exist (they extend those).
+void readMeshShader(VkPhysicalDevice device, bool queries, device::DeviceFeatures& f) {
+    VkPhysicalDeviceMeshShaderPropertiesEXT mesh{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_PROPERTIES_EXT};
+    VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &mesh};
+    vkGetPhysicalDeviceProperties2(device, &props);
+    f.meshShader = true;
+    f.meshShaderQueries = queries && f.pipelineStatistics;
+    f.maxMeshOutputVertices = mesh.maxMeshOutputVertices;
+    f.maxMeshOutputPrimitives = mesh.maxMeshOutputPrimitives;
+    f.maxMeshWorkGroupInvocations = mesh.maxMeshWorkGroupInvocations;
+    f.maxTaskPayloadSize = mesh.maxTaskPayloadSize;
+}
+
 std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return s;
@@ -159,10 +173,19 @@ void Instance::enumerate() {
         if (props.properties.apiVersion < VK_API_VERSION_1_3) continue;
 
         VkPhysicalDeviceTransformFeedbackFeaturesEXT xfb{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_FEATURES_EXT};
+        VkPhysicalDeviceMeshShaderFeaturesEXT mesh{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MESH_SHADER_FEATURES_EXT};
         VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
         VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v13};
         const bool hasXfb = hasDeviceExtension(pd, VK_EXT_TRANSFORM_FEEDBACK_EXTENSION_NAME);
-        if (hasXfb) v13.pNext = &xfb;
+        const bool hasMesh = hasDeviceExtension(pd, VK_EXT_MESH_SHADER_EXTENSION_NAME);
+        if (hasXfb) {
+            xfb.pNext = v13.pNext;
+            v13.pNext = &xfb;
+        }
+        if (hasMesh) {
+            mesh.pNext = v13.pNext;
+            v13.pNext = &mesh;
+        }
         vkGetPhysicalDeviceFeatures2(pd, &features);
         if (!v13.dynamicRendering || !v13.synchronization2 || !hasDeviceExtension(pd, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
             continue;
@@ -186,6 +209,9 @@ void Instance::enumerate() {
         f.vertexStores = features.features.vertexPipelineStoresAndAtomics;
         f.multiDrawIndirect = features.features.multiDrawIndirect && features.features.drawIndirectFirstInstance;
         f.maxTessellationLevel = f.tessellationShader ? props.properties.limits.maxTessellationGenerationLevel : 0;
+        // Both stages or neither: the backend that uses them amplifies in
+        // the task stage.
+        if (hasMesh && mesh.taskShader && mesh.meshShader) readMeshShader(pd, mesh.meshShaderQueries, f);
         mDevices.push_back(std::move(info));
     }
 }

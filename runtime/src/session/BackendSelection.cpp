@@ -27,17 +27,17 @@ Status listBackends(const Options& options) {
     }
 
     const device::DeviceFeatures* features = deviceFeatures ? &*deviceFeatures : nullptr;
-    std::printf("%-11s %-9s %-10s %-4s %-4s %-7s %-6s %s\n", "backend", "status", "tess", "xfb", "geom", "compute",
-                "max tf", "description");
+    std::printf("%-11s %-9s %-10s %-4s %-4s %-7s %-4s %-6s %s\n", "backend", "status", "tess", "xfb", "geom", "compute",
+                "mesh", "max tf", "description");
     for (const auto& name : registry.names()) {
         auto backend = registry.create(name);
         if (!backend) continue;
         auto caps = backend.value()->capabilities(features);
         const bool runnable = caps.supported() && (features || !caps.requiresGpu);
-        std::printf("%-11s %-9s %-10s %-4s %-4s %-7s %-6.2f %s\n", name.c_str(), runnable ? "ok" : "no",
+        std::printf("%-11s %-9s %-10s %-4s %-4s %-7s %-4s %-6.2f %s\n", name.c_str(), runnable ? "ok" : "no",
                     backend::toString(caps.tessellation), caps.usesTransformFeedback ? "yes" : "-",
-                    caps.usesGeometryShaders ? "yes" : "-", caps.usesCompute ? "yes" : "-", caps.maxTessFactor,
-                    caps.description.c_str());
+                    caps.usesGeometryShaders ? "yes" : "-", caps.usesCompute ? "yes" : "-",
+                    caps.usesMeshShaders ? "yes" : "-", caps.maxTessFactor, caps.description.c_str());
         if (!caps.missing.empty()) std::printf("%-11s missing: %s\n", "", joinMissing(caps).c_str());
         std::printf("%-11s from %s\n", "", registry.sourceOf(name).c_str());
     }
@@ -57,6 +57,13 @@ Status listDevices(const Options& options) {
                     chosen && chosen->index == d.index ? "  [default]" : "", f.tessellationShader ? "yes" : "no",
                     f.maxTessellationLevel, f.geometryShader ? "yes" : "no", f.transformFeedback ? "yes" : "no",
                     f.pipelineStatistics ? "yes" : "no", f.timestamps ? "yes" : "no");
+        if (f.meshShader)
+            std::printf("   mesh shaders yes (%u vertices, %u primitives, %u invocations a workgroup; task payload %u "
+                        "bytes; queries %s)\n",
+                        f.maxMeshOutputVertices, f.maxMeshOutputPrimitives, f.maxMeshWorkGroupInvocations,
+                        f.maxTaskPayloadSize, f.meshShaderQueries ? "yes" : "no");
+        else
+            std::printf("   mesh shaders no\n");
     }
     return {};
 }

@@ -12,7 +12,7 @@ struct Named {
 
 // The user-facing names: the words --list-devices and the backends'
 // "missing" lists use, not Vulkan's member names.
-constexpr std::array<Named, 8> kFeatures = {{
+constexpr std::array<Named, 9> kFeatures = {{
     {"tessellation", &DeviceFeatures::tessellationShader},
     {"geometry", &DeviceFeatures::geometryShader},
     {"transform-feedback", &DeviceFeatures::transformFeedback},
@@ -21,6 +21,7 @@ constexpr std::array<Named, 8> kFeatures = {{
     {"wireframe", &DeviceFeatures::fillModeNonSolid},
     {"vertex-stores", &DeviceFeatures::vertexStores},
     {"multi-draw-indirect", &DeviceFeatures::multiDrawIndirect},
+    {"mesh-shader", &DeviceFeatures::meshShader},
 }};
 
 } // namespace
@@ -41,6 +42,12 @@ void applyFeatureMask(const FeatureMask& mask, DeviceFeatures& features) {
     for (size_t i = 0; i < kFeatures.size(); ++i)
         if (mask.bits & (1u << i)) features.*kFeatures[i].flag = false;
     if (!features.tessellationShader) features.maxTessellationLevel = 0;
+    // Hiding mesh shaders hides what only exists with them.
+    if (!features.meshShader) {
+        features.meshShaderQueries = false;
+        features.maxMeshOutputVertices = features.maxMeshOutputPrimitives = 0;
+        features.maxMeshWorkGroupInvocations = features.maxTaskPayloadSize = 0;
+    }
 }
 
 } // namespace tessera::device

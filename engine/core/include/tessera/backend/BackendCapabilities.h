@@ -32,6 +32,7 @@ struct BackendCapabilities {
     bool usesTransformFeedback = false;
     bool usesGeometryShaders = false;
     bool usesCompute = false;
+    bool usesMeshShaders = false; ///< task and mesh stages (VK_EXT_mesh_shader)
     float maxTessFactor = 1.0f;
     /// Draws instanced crowds with GPU culling and LOD binning (createCrowd);
     /// hosts draw crowds through drawCharacters where it does not.

@@ -25,6 +25,17 @@ struct DeviceFeatures {
     bool vertexStores = false;       ///< storage writes from vertex/tess/geometry stages
     bool multiDrawIndirect = false;  ///< indirect draws of many commands with a first instance (emulated tessellator)
     uint32_t maxTessellationLevel = 0;
+    /// VK_EXT_mesh_shader with both stages: task (amplification) and mesh.
+    bool meshShader = false;
+    /// The extension's queries: task and mesh shader invocations in the
+    /// pipeline statistics, and the mesh primitives generated query.
+    bool meshShaderQueries = false;
+    /// One mesh workgroup's limits (0 without mesh shaders): what a patch's
+    /// pattern must be split by, and what a task workgroup may hand on.
+    uint32_t maxMeshOutputVertices = 0;
+    uint32_t maxMeshOutputPrimitives = 0;
+    uint32_t maxMeshWorkGroupInvocations = 0;
+    uint32_t maxTaskPayloadSize = 0; ///< bytes
 };
 
 } // namespace tessera::device

@@ -36,6 +36,10 @@ struct DeviceFunctions {
     PFN_vkCmdBeginTransformFeedbackEXT cmdBeginTransformFeedback = nullptr;
     PFN_vkCmdEndTransformFeedbackEXT cmdEndTransformFeedback = nullptr;
     PFN_vkCmdDrawIndirectByteCountEXT cmdDrawIndirectByteCount = nullptr;
+    /// VK_EXT_mesh_shader's draws (null without mesh shaders).
+    PFN_vkCmdDrawMeshTasksEXT cmdDrawMeshTasks = nullptr;
+    PFN_vkCmdDrawMeshTasksIndirectEXT cmdDrawMeshTasksIndirect = nullptr;
+    PFN_vkCmdDrawMeshTasksIndirectCountEXT cmdDrawMeshTasksIndirectCount = nullptr;
 };
 
 class Device {
@@ -43,7 +47,8 @@ public:
     /// Creates the logical device on `physical`, enabling every optional
     /// feature Tessera's backends can use that the device supports
     /// (tessellation, geometry shaders, transform feedback, pipeline
-    /// statistics, wireframe). Backends check features() for what they need.
+    /// statistics, wireframe, task and mesh shaders). Backends check
+    /// features() for what they need.
     static Result<std::unique_ptr<Device>> create(Instance& instance, const PhysicalDeviceInfo& physical);
     ~Device();
     Device(const Device&) = delete;
