@@ -9,12 +9,13 @@
 ///   }
 /// @endcode
 ///
-/// The entry point's symbol carries the ABI version (`registerPlugin_v7`), so a
+/// The entry point's symbol carries the ABI version (`registerPlugin_v8`), so a
 /// host never calls into a plugin built against a different contract: the
 /// loader finds `registerPlugin_v<N>` with the wrong N and reports the mismatch
 /// instead. Bump kPluginAbiVersion whenever BackendApi.inc or any type that
 /// crosses the boundary changes layout or namespace (7: DeviceFeatures and
-/// FeatureMask moved to tessera::device, SubdivMeshData to the contract).
+/// FeatureMask moved to tessera::device, SubdivMeshData to the contract; 8:
+/// DeviceFeatures' mesh-shader fields, BackendCapabilities::usesMeshShaders).
 
 #include "tessera/backend/Backend.h"
 
@@ -23,14 +24,14 @@
 namespace tessera::backend {
 
 /// The contract version this host and its plugins are built against.
-inline constexpr uint32_t kPluginAbiVersion = 7;
+inline constexpr uint32_t kPluginAbiVersion = 8;
 
 #define TESSERA_PLUGIN_STRINGIFY_(x) #x
 #define TESSERA_PLUGIN_STRINGIFY(x) TESSERA_PLUGIN_STRINGIFY_(x)
 #define TESSERA_PLUGIN_CONCAT_(a, b) a##b
 #define TESSERA_PLUGIN_CONCAT(a, b) TESSERA_PLUGIN_CONCAT_(a, b)
 /// Must equal kPluginAbiVersion (a macro because it builds a symbol name).
-#define TESSERA_PLUGIN_ABI_VERSION 7
+#define TESSERA_PLUGIN_ABI_VERSION 8
 #define TESSERA_PLUGIN_ENTRY_SYMBOL TESSERA_PLUGIN_CONCAT(registerPlugin_v, TESSERA_PLUGIN_ABI_VERSION)
 /// The prefix shared by every version of the entry point, for mismatch reports.
 #define TESSERA_PLUGIN_ENTRY_PREFIX "registerPlugin_v"
