@@ -57,7 +57,7 @@ Status writeOutputs(const Options& options, RenderSession& session, const terrai
         info.backend = session.capabilities().name;
         info.device = session.deviceName();
         info.driver = session.driverName();
-        info.scene = "terrain";
+        info.scene = options.scene;
         info.width = width;
         info.height = height;
         info.warmupFrames = warmup;
