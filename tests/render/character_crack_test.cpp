@@ -204,7 +204,8 @@ INSTANTIATE_TEST_SUITE_P(EveryBackend, CharacterCrackWholeBody, ::testing::Value
                          [](const auto& test) { return test.param; });
 
 // Above the emulated range, where only hulldomain goes (its hardware
-// tessellator reaches 64). Not on lavapipe (Mesa 22.3.6): there, triangle
+// tessellator reaches 64). Not on lavapipe (Mesa 22.3.6, and still 25.0.7:
+// 1,814 hole pixels at level 20 on both paths, re-checked 2026-11-27): there, triangle
 // patches with more than 16 segments per edge come out broken, with stray
 // triangles and about 1,500 hole pixels from level 15.5 on (level 15 is
 // closed), with or without displacement and on both paths, while the same
