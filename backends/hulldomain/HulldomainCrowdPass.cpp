@@ -26,7 +26,8 @@ HulldomainCrowdPass::HulldomainCrowdPass(gpu::Device& device, VkFormat colorForm
     : mDevice(&device) {
     // One layout per bind point: lavapipe (Mesa 22.3) crashes in a later
     // pipeline-statistics query when compute pushes descriptors through a
-    // layout whose bindings are also visible to graphics stages.
+    // layout whose bindings are also visible to graphics stages (fixed in
+    // Mesa 25.0; kept for the machines that stay on 22.3).
     using Mode = CrowdDescriptors::Mode;
     mComputeLayout =
         CrowdDescriptors::layout(device, Mode::Storage, VK_SHADER_STAGE_COMPUTE_BIT, "hulldomain.crowd.computeLayout");
