@@ -18,6 +18,7 @@ struct StatisticField {
     uint64_t profiler::PipelineStatistics::*field;
     bool needsGeometry;
     bool needsTessellation;
+    bool needsMeshQueries = false;
 };
 
 constexpr StatisticField kFields[] = {
@@ -32,6 +33,8 @@ constexpr StatisticField kFields[] = {
     {VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_CONTROL_SHADER_PATCHES_BIT, &profiler::PipelineStatistics::tessControlPatches, false, true},
     {VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_EVALUATION_SHADER_INVOCATIONS_BIT, &profiler::PipelineStatistics::tessEvaluationInvocations, false, true},
     {VK_QUERY_PIPELINE_STATISTIC_COMPUTE_SHADER_INVOCATIONS_BIT, &profiler::PipelineStatistics::computeShaderInvocations, false, false},
+    {VK_QUERY_PIPELINE_STATISTIC_TASK_SHADER_INVOCATIONS_BIT_EXT, &profiler::PipelineStatistics::taskShaderInvocations, false, false, true},
+    {VK_QUERY_PIPELINE_STATISTIC_MESH_SHADER_INVOCATIONS_BIT_EXT, &profiler::PipelineStatistics::meshShaderInvocations, false, false, true},
 };
 
 } // namespace
@@ -54,6 +57,7 @@ GpuProfiler::GpuProfiler(Device& device, profiler::Profiler& profiler, uint32_t 
         for (const auto& f : kFields) {
             if (f.needsGeometry && !features.geometryShader) continue;
             if (f.needsTessellation && !features.tessellationShader) continue;
+            if (f.needsMeshQueries && !features.meshShaderQueries) continue;
             mStatisticFlags |= f.bit;
             ++mStatisticCount;
         }

@@ -67,6 +67,9 @@ void drawCountsSection(SceneRun& run, const FrameStats& stats) {
                 static_cast<unsigned long long>(s.clippingPrimitives),
                 static_cast<unsigned long long>(s.fragmentShaderInvocations),
                 static_cast<unsigned long long>(s.computeShaderInvocations));
+    if (s.taskShaderInvocations || s.meshShaderInvocations)
+        ImGui::Text("  task shader %llu, mesh shader %llu", static_cast<unsigned long long>(s.taskShaderInvocations),
+                    static_cast<unsigned long long>(s.meshShaderInvocations));
 }
 
 void drawTerrainControls(SceneRun& run) {

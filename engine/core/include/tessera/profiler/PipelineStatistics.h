@@ -2,10 +2,11 @@
 /// @file PipelineStatistics.h
 /// The Vulkan pipeline-statistics counters of one GPU pass, CPU-side.
 ///
-/// Field for field this is VkQueryPipelineStatisticFlagBits (core Vulkan 1.0)
-/// minus the Vulkan types, so tessera_core stays free of Vulkan. The Vulkan
-/// layer fills it from a VK_QUERY_TYPE_PIPELINE_STATISTICS query; counters a
-/// device does not support stay 0.
+/// Field for field this is VkQueryPipelineStatisticFlagBits (core Vulkan 1.0,
+/// and VK_EXT_mesh_shader's task and mesh invocations) minus the Vulkan
+/// types, so tessera_core stays free of Vulkan. The Vulkan layer fills it
+/// from a VK_QUERY_TYPE_PIPELINE_STATISTICS query; counters a device does
+/// not support stay 0.
 
 #include <cstdint>
 
@@ -26,6 +27,11 @@ struct PipelineStatistics {
     uint64_t tessControlPatches = 0;
     uint64_t tessEvaluationInvocations = 0;
     uint64_t computeShaderInvocations = 0;
+    /// Task (amplification) and mesh shader invocations; Vulkan lets a
+    /// device count a workgroup once or per invocation (lavapipe: per
+    /// invocation), so compare them on one device only.
+    uint64_t taskShaderInvocations = 0;
+    uint64_t meshShaderInvocations = 0;
 };
 
 /// Calls `fn(name, memberPointer)` for every counter in declaration order, so
@@ -44,9 +50,11 @@ constexpr void forEachPipelineStatistic(Fn&& fn) {
     fn("tessControlPatches", &S::tessControlPatches);
     fn("tessEvaluationInvocations", &S::tessEvaluationInvocations);
     fn("computeShaderInvocations", &S::computeShaderInvocations);
+    fn("taskShaderInvocations", &S::taskShaderInvocations);
+    fn("meshShaderInvocations", &S::meshShaderInvocations);
 }
 // A field added above without adding it to forEachPipelineStatistic fails here.
-static_assert(sizeof(PipelineStatistics) == 11 * sizeof(uint64_t),
+static_assert(sizeof(PipelineStatistics) == 13 * sizeof(uint64_t),
               "update forEachPipelineStatistic() with the new counter");
 
 /// Adds every counter of `rhs` to `lhs` (summing passes into a frame).
