@@ -179,17 +179,9 @@ void CharacterCrowd::update(double seconds, const scene::Camera& camera, const C
     }
     for (uint32_t id = 0; id < mMembers.size(); ++id) {
         const Member& m = mMembers[id];
-        glm::vec2 at = m.anchor;
-        float heading = m.angle;
-        if (m.radius > 0.0f) {
-            const float theta = m.angle + m.speed / m.radius * float(seconds);
-            at += m.radius * glm::vec2(std::cos(theta), std::sin(theta));
-            // Facing along the circle: +Z (glTF's forward) turned onto the tangent.
-            const glm::vec2 tangent = (m.speed < 0.0f ? -1.0f : 1.0f) * glm::vec2(-std::sin(theta), std::cos(theta));
-            heading = std::atan2(tangent.x, tangent.y);
-        }
-        glm::mat4 world = glm::translate(glm::mat4(1.0f), glm::vec3(at.x, mTerrain->heightAt(at.x, at.y), at.y));
-        world = glm::rotate(world, heading, glm::vec3(0, 1, 0));
+        const Placement place = placementAt(m, seconds);
+        glm::mat4 world = glm::translate(glm::mat4(1.0f), place.feet);
+        world = glm::rotate(world, place.heading, glm::vec3(0, 1, 0));
         mPoser.offer(id, m.asset, world, m.clip, float(seconds) + m.clipOffset);
     }
     mPoser.finish(mAssets);
