@@ -61,6 +61,15 @@ TEST(FeatureMask, HidingMeshShadersHidesTheirQueriesAndLimits) {
     EXPECT_EQ(f.maxTessellationLevel, 64u);
 }
 
+TEST(FeatureMask, HidingPipelineStatisticsHidesTheMeshShaderQueries) {
+    auto mask = parseFeatureMask("pipeline-statistics");
+    ASSERT_TRUE(mask) << mask.error().message;
+    DeviceFeatures f = everything();
+    applyFeatureMask(mask.value(), f);
+    EXPECT_FALSE(f.pipelineStatistics || f.meshShaderQueries);
+    EXPECT_TRUE(f.meshShader);
+}
+
 TEST(FeatureMask, AnUnknownNameIsRefusedWithTheKnownOnes) {
     for (const char* list : {"tessellation,warp", "Tessellation", "tessellation,", ",geometry"}) {
         auto mask = parseFeatureMask(list);

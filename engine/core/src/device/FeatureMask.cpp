@@ -42,6 +42,8 @@ void applyFeatureMask(const FeatureMask& mask, DeviceFeatures& features) {
     for (size_t i = 0; i < kFeatures.size(); ++i)
         if (mask.bits & (1u << i)) features.*kFeatures[i].flag = false;
     if (!features.tessellationShader) features.maxTessellationLevel = 0;
+    // The mesh-shader queries extend pipeline statistics: hiding either hides them.
+    if (!features.pipelineStatistics) features.meshShaderQueries = false;
     // Hiding mesh shaders hides what only exists with them.
     if (!features.meshShader) {
         features.meshShaderQueries = false;
