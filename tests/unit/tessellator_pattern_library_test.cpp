@@ -7,6 +7,7 @@
 #include "tessera/shaders/TessPattern.h"
 #include "tessera/tessellator/PatternLibrary.h"
 #include "tessera/tessellator/Tessellator.h"
+#include "QuadPatternTriangles.h"
 
 #include <gtest/gtest.h>
 
@@ -19,28 +20,8 @@ using namespace tessera::tessellator;
 
 namespace {
 
-using Corner = std::array<float, 2>;
-using Triangle = std::array<Corner, 3>;
-
-// The same triangle with the same winding always compares equal: rotate so
-// the smallest corner comes first.
-Triangle canonical(Triangle t) {
-    const auto first = std::min_element(t.begin(), t.end()) - t.begin();
-    std::rotate(t.begin(), t.begin() + first, t.end());
-    return t;
-}
-
-std::vector<Triangle> reference(const TessFactors& f) {
-    const TessellatedPatch patch = Tessellator::tessellate(Domain::Quad, Partitioning::FractionalOdd, f);
-    std::vector<Triangle> triangles;
-    for (size_t i = 0; i < patch.indices.size(); i += 3) {
-        Triangle t;
-        for (size_t c = 0; c < 3; ++c) t[c] = {patch.uv[patch.indices[i + c]].x, patch.uv[patch.indices[i + c]].y};
-        triangles.push_back(canonical(t));
-    }
-    std::sort(triangles.begin(), triangles.end());
-    return triangles;
-}
+using test::canonicalTriangle;
+using Triangle = test::PatternTriangle;
 
 std::vector<Triangle> emulated(const TessFactors& f, uint32_t& commands) {
     const PatternLibrary& library = PatternLibrary::quadFractionalOdd();
@@ -62,7 +43,7 @@ std::vector<Triangle> emulated(const TessFactors& f, uint32_t& commands) {
                 const glm::vec2 uv = shader::tsEmuDomainPoint(library.vertices()[p.firstVertex + v + c], piece, outer, inner);
                 t[c] = {uv.x, uv.y};
             }
-            triangles.push_back(canonical(t));
+            triangles.push_back(canonicalTriangle(t));
         }
     }
     std::sort(triangles.begin(), triangles.end());
@@ -71,13 +52,10 @@ std::vector<Triangle> emulated(const TessFactors& f, uint32_t& commands) {
 
 void expectSame(const TessFactors& f) {
     uint32_t commands = 0;
-    const auto expected = reference(f);
+    const auto expected = test::referenceQuadTriangles(f);
     const auto actual = emulated(f, commands);
-    ASSERT_EQ(actual.size(), expected.size())
-        << "outer " << f.outer[0] << " " << f.outer[1] << " " << f.outer[2] << " " << f.outer[3] << " inner "
-        << f.inner[0] << " " << f.inner[1];
-    EXPECT_TRUE(actual == expected) << "outer " << f.outer[0] << " " << f.outer[1] << " " << f.outer[2] << " "
-                                    << f.outer[3] << " inner " << f.inner[0] << " " << f.inner[1];
+    ASSERT_EQ(actual.size(), expected.size()) << test::describeLevels(f);
+    EXPECT_TRUE(actual == expected) << test::describeLevels(f);
     EXPECT_EQ(actual.size(), Tessellator::countTriangles(Domain::Quad, Partitioning::FractionalOdd, f));
 }
 

@@ -1,0 +1,113 @@
+// The mesh-shader tessellation run on the CPU: assembling a patch from its
+// pieces (TessMeshPattern.h compiled as C++, the task and mesh shaders' own
+// code) and the library's connectivity must give exactly Tessellator's
+// triangles for every level up to 64: at every boundary where a point count
+// changes, and at 2,000 random levels. Every piece must fit one mesh
+// workgroup on any device (the Vulkan minimum is 256 vertices and 256
+// primitives; lavapipe and NVIDIA have exactly that).
+#include "tessera/core/Random.h"
+#include "tessera/shaders/TessMeshPattern.h"
+#include "tessera/tessellator/MeshPatternLibrary.h"
+#include "tessera/tessellator/Tessellator.h"
+#include "QuadPatternTriangles.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+using namespace tessera;
+using namespace tessera::tessellator;
+
+namespace {
+
+using test::PatternTriangle;
+
+std::vector<PatternTriangle> assembled(const TessFactors& f) {
+    const MeshPatternLibrary& library = MeshPatternLibrary::quadFractionalOdd();
+    const shader::TsMeshPatch patch = shader::tsMeshPatch(glm::vec4(f.outer[0], f.outer[1], f.outer[2], f.outer[3]),
+                                                          glm::vec2(f.inner[0], f.inner[1]));
+    EXPECT_LE(patch.pieceCount, TS_MESH_MAX_PIECES);
+    std::vector<PatternTriangle> triangles;
+    for (uint32_t piece = 0; piece < patch.pieceCount; ++piece) {
+        const uint32_t key = shader::tsMeshPieceKey(patch, piece);
+        EXPECT_LT(key, TS_MESH_KEY_COUNT);
+        const glm::uvec4 entry = library.keys()[key].entry;
+        for (uint32_t t = 0; t < entry.y; ++t) {
+            const uint32_t packed = library.triangles()[entry.x + t];
+            PatternTriangle triangle;
+            for (uint32_t c = 0; c < 3; ++c) {
+                const uint32_t local = (packed >> (8 * c)) & 0xffu;
+                const uint32_t row = local < entry.z ? 0 : 1;
+                EXPECT_LT(local, entry.z + entry.w);
+                const glm::vec2 uv = shader::tsMeshPiecePoint(patch, piece, row, local - row * entry.z);
+                triangle[c] = {uv.x, uv.y};
+            }
+            triangles.push_back(test::canonicalTriangle(triangle));
+        }
+    }
+    std::sort(triangles.begin(), triangles.end());
+    return triangles;
+}
+
+void expectSame(const TessFactors& f) {
+    const auto expected = test::referenceQuadTriangles(f);
+    const auto actual = assembled(f);
+    ASSERT_EQ(actual.size(), expected.size()) << test::describeLevels(f);
+    EXPECT_TRUE(actual == expected) << test::describeLevels(f);
+}
+
+} // namespace
+
+TEST(TessellatorMeshPattern, EveryPieceFitsOneMeshWorkgroup) {
+    const MeshPatternLibrary& library = MeshPatternLibrary::quadFractionalOdd();
+    ASSERT_EQ(library.keys().size(), TS_MESH_KEY_COUNT);
+    for (const shader::TsMeshKey& key : library.keys()) {
+        EXPECT_GT(key.entry.y, 0u);
+        EXPECT_LE(key.entry.y, TS_MESH_MAX_TRIANGLES);
+        EXPECT_LE(key.entry.z + key.entry.w, TS_MESH_MAX_VERTICES);
+        EXPECT_LE(key.entry.x + key.entry.y, library.triangles().size());
+    }
+    const shader::TsMeshPatch densest = shader::tsMeshPatch(glm::vec4(64.0f), glm::vec2(64.0f));
+    EXPECT_EQ(densest.pieceCount, TS_MESH_MAX_PIECES);
+}
+
+// Every level where a point count changes (odd integers, just below and
+// above), alone and mixed, on every edge and axis.
+TEST(TessellatorMeshPattern, ClassBoundariesMatchTheTessellator) {
+    const float nudge = 1.0f / 256.0f;
+    for (int odd = 1; odd <= 63; odd += 2)
+        for (float level : {float(odd) - nudge, float(odd), float(odd) + nudge}) {
+            if (level < 1.0f) continue;
+            expectSame({{level, level, level, level}, {level, level}});
+            expectSame({{level, 1.0f, 64.0f, 7.0f}, {level, 3.0f}});
+            expectSame({{2.0f, level, 9.0f, level}, {33.0f, level}});
+            if (HasFailure()) return;
+        }
+}
+
+TEST(TessellatorMeshPattern, RandomLevelsMatchTheTessellator) {
+    Random rng(29u);
+    for (int i = 0; i < 2000; ++i) {
+        // A third of the levels land exactly on 1 or an odd integer.
+        auto pick = [&] {
+            switch (rng.below(6)) {
+            case 0: return 1.0f;
+            case 1: return float(2 * rng.below(32) + 1);
+            default: return rng.range(0.5f, TS_MESH_MAX_LEVEL);
+            }
+        };
+        TessFactors f;
+        for (float& o : f.outer) o = pick();
+        for (float& in : f.inner) in = pick();
+        expectSame(f);
+        if (HasFailure()) return;
+    }
+}
+
+TEST(TessellatorMeshPattern, MinimalAndFramedPatches) {
+    expectSame({{1.0f, 1.0f, 1.0f, 1.0f}, {1.0f, 1.0f}});
+    expectSame({{1.0f, 5.0f, 1.0f, 1.0f}, {1.0f, 1.0f}});
+    expectSame({{1.0f, 1.0f, 1.0f, 1.0f}, {1.0f, 64.0f}});
+    expectSame({{64.0f, 1.0f, 64.0f, 1.0f}, {1.0f, 1.0f}});
+}
