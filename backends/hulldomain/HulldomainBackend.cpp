@@ -4,6 +4,7 @@
 #include "common/BackendPlugin.h"
 #include "common/BasicCharacterBackend.h"
 #include "common/CommandHelpers.h"
+#include "common/ComputeTessFactorPass.h"
 #include "common/CrowdDescriptors.h"
 #include "common/FillWirePipelines.h"
 #include "common/TerrainBindings.h"
@@ -12,7 +13,6 @@
 #include "HulldomainCharacterSkinPass.h"
 #include "HulldomainCrowdPass.h"
 #include "HulldomainSubdivPass.h"
-#include "HulldomainTessFactorPass.h"
 
 #include "hulldomain_terrain_patch.tesc.spv.h"
 #include "hulldomain_terrain_patch.tese.spv.h"
@@ -42,7 +42,7 @@ protected:
     TerrainResolvePass::Mode terrainResolveMode() const override { return TerrainResolvePass::Mode::Compute; }
 
     Status initializeTechnique(const backend::BackendInitInfo& info) override {
-        mFactorPass = HulldomainTessFactorPass(*mDevice, "hulldomain");
+        mFactorPass = ComputeTessFactorPass(*mDevice, "hulldomain");
         mCharacterSkin = HulldomainCharacterSkinPass(*mDevice);
         mCharacterPatches = HulldomainCharacterPatchPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
                                                          static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
@@ -127,7 +127,8 @@ protected:
         for (uint32_t slot = 0; slot < gpu::kFramesInFlight; ++slot)
             mReport.intermediateBytes += terrain.edgeLevels(slot).size() + terrain.patchLevels(slot).size();
         // Continuous mode has one level for the draw: no per-edge pre-pass.
-        if (!continuous) mFactorPass.record(*mFrame, terrain, tessUniforms, terrainPush(terrain));
+        if (!continuous) mFactorPass.record(*mFrame, terrain, tessUniforms, terrainPush(terrain),
+                                             VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT);
 
         ensureMainPass();
         gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");
@@ -153,7 +154,7 @@ protected:
     }
 
 private:
-    HulldomainTessFactorPass mFactorPass;
+    ComputeTessFactorPass mFactorPass;
     HulldomainCrowdPass mCrowdPass;
     HulldomainSubdivPass mSubdivPass;
     HulldomainCharacterSkinPass mCharacterSkin;

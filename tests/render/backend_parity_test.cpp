@@ -1,12 +1,15 @@
 // Backend parity: hulldomain (hardware tessellation), r2vb and streamout (the
-// emulated D3D11 tessellator) must draw the same tessellated terrain when the
-// levels stay within the emulated range (--tess-max 14.99, continuous levels
-// up to 14.99). Each case renders one fixed view on all three backends under
-// the validation layer and checks, against hulldomain:
+// emulated D3D11 tessellator) and meshshader (the patterns from task and mesh
+// shaders) must draw the same tessellated terrain when the levels stay within
+// the emulated range (--tess-max 14.99, continuous levels up to 14.99), and
+// meshshader also above it, up to 64. Each case renders one fixed view on
+// every backend it names under the validation layer and checks, against
+// hulldomain:
 //  - the triangles of the tessellated pass ("terrain.continuous" or
-//    "terrain.adaptive"): the pipeline statistics' clipping invocations
-//    (primitives reaching the clipper) of the median frame, from --benchmark,
-//    must be equal;
+//    "terrain.adaptive"): the primitives generated for the clipper (the
+//    pipeline statistics' clipping invocations, or the mesh primitives
+//    generated where a device counts no clipping for mesh pipelines) of the
+//    median frame, from --benchmark, must be equal;
 //  - the images must match within kParityTolerance; a diff image
 //    (test-output/backend_parity/<case>.<backend>.diff.png) is written on a
 //    mismatch.
@@ -39,7 +42,7 @@ using namespace tessera::test;
 namespace {
 
 const char* const kReference = "hulldomain";
-const char* const kEmulated[] = {"r2vb", "streamout"};
+const std::vector<std::string> kCompared = {"r2vb", "streamout", "meshshader"};
 
 // The golden images' view across a valley towards the mountains: patches from
 // a few hundred metres to the horizon, so the adaptive levels span 1 to the
@@ -66,6 +69,7 @@ struct ParityCase {
     std::string name;
     std::string pass; ///< the tessellated pass whose triangles are compared
     std::vector<std::string> args;
+    std::vector<std::string> backends = kCompared; ///< compared with hulldomain
 };
 
 // gtest prints a parameter's bytes unless told otherwise; the name says it all.
@@ -103,6 +107,12 @@ std::vector<ParityCase> parityCases() {
          "terrain.continuous",
          {"--terrain-mode", "continuous", "--tess-level", "7.5", "--splat", "2800,5000,200", "--splat",
           "2300,5900,120"}},
+        // Above the emulated range: only the mesh-shader patterns go there.
+        {"continuous_l27_3", "terrain.continuous", {"--terrain-mode", "continuous", "--tess-level", "27.3"}, {"meshshader"}},
+        {"adaptive_screen_l64",
+         "terrain.adaptive",
+         {"--terrain-mode", "adaptive", "--tess-max", "64", "--tess-metric", "screen", "--tess-target", "1.5"},
+         {"meshshader"}},
     };
 }
 
@@ -118,6 +128,9 @@ std::string commandLine(const std::vector<std::string>& args) {
 /// Pipeline statistics of one pass in the median frame.
 struct PassStats {
     uint64_t clippingInvocations = 0;
+    uint64_t meshPrimitivesGenerated = 0;
+    /// Triangles generated for the clipper (profiler::generatedPrimitivesOf).
+    uint64_t generated() const { return clippingInvocations != 0 ? clippingInvocations : meshPrimitivesGenerated; }
     uint64_t clippingPrimitives = 0;
     uint64_t vertexShaderInvocations = 0;
     uint64_t tessEvaluationInvocations = 0;
@@ -160,6 +173,7 @@ void readStats(const std::string& path, const std::string& passName, BackendRun&
         auto count = [&](const char* key) { return static_cast<uint64_t>(numberAt(*s, key).value_or(0.0)); };
         PassStats stats;
         stats.clippingInvocations = count("clippingInvocations");
+        stats.meshPrimitivesGenerated = count("meshPrimitivesGenerated");
         stats.clippingPrimitives = count("clippingPrimitives");
         stats.vertexShaderInvocations = count("vertexShaderInvocations");
         stats.tessEvaluationInvocations = count("tessEvaluationInvocations");
@@ -193,7 +207,8 @@ std::string describe(const BackendRun& run) {
     if (!run.stats) return run.backend + ": no statistics";
     const PassStats& s = *run.stats;
     std::ostringstream out;
-    out << run.backend << ": clipping invocations " << s.clippingInvocations << ", clipping primitives "
+    out << run.backend << ": clipping invocations " << s.clippingInvocations << ", mesh primitives "
+        << s.meshPrimitivesGenerated << ", clipping primitives "
         << s.clippingPrimitives << ", VS " << s.vertexShaderInvocations << ", TES " << s.tessEvaluationInvocations
         << ", GS " << s.geometryShaderInvocations << ", FS " << s.fragmentShaderInvocations;
     return out.str();
@@ -219,11 +234,9 @@ PixelDelta pixelDelta(const Rgba8Image& a, const Rgba8Image& b) {
     return d;
 }
 
-/// "the device cannot run it" is not a parity failure: the demo says so with
-/// this hint, and the test skips that backend.
+/// "the device cannot run it" is not a parity failure: the test skips that backend.
 bool deviceCannotRun(const BackendRun& run) {
-    return run.result.exitCode != 0 &&
-           run.result.output.find("run --list-backends to see which backends this device runs") != std::string::npos;
+    return tessera::test::deviceCannotRun(run.result);
 }
 
 class BackendParity : public ::testing::TestWithParam<ParityCase> {};
@@ -244,7 +257,7 @@ TEST_P(BackendParity, TrianglesAndImagesMatchHulldomain) {
     ASSERT_TRUE(expected.ok()) << reference.screenshot << ": " << expected.error().message;
     std::cout << "[parity] " << c.name << " " << describe(reference) << "\n";
 
-    for (const char* backend : kEmulated) {
+    for (const std::string& backend : c.backends) {
         SCOPED_TRACE(backend);
         const BackendRun run = runBackend(c, backend);
         if (deviceCannotRun(run)) {
@@ -258,8 +271,8 @@ TEST_P(BackendParity, TrianglesAndImagesMatchHulldomain) {
         EXPECT_TRUE(run.stats) << run.command << ": " << run.error << " (passes: " << run.passes << ")";
         if (run.stats) {
             std::cout << "[parity] " << c.name << " " << describe(run) << "\n";
-            EXPECT_EQ(run.stats->clippingInvocations, reference.stats->clippingInvocations)
-                << c.name << ": " << backend << " sends " << run.stats->clippingInvocations
+            EXPECT_EQ(run.stats->generated(), reference.stats->clippingInvocations)
+                << c.name << ": " << backend << " sends " << run.stats->generated()
                 << " triangles to the clipper in " << c.pass << ", hulldomain " << reference.stats->clippingInvocations
                 << "\n  " << describe(run) << "\n  " << describe(reference) << "\n  " << run.command << "\n  "
                 << reference.command;
@@ -338,8 +351,17 @@ TEST(BackendParityBench, BackendAllAgreesOnTrianglesAndWritesATracePerBackend) {
     std::string error;
     ASSERT_TRUE(readJsonFile(out, records, error)) << out << ": " << error;
     ASSERT_TRUE(records.is_array()) << out;
-    // 2 views x (lowres, continuous, adaptive with 4 metrics) x 3 backends.
-    EXPECT_EQ(records.size(), 2u * 6u * 3u) << out;
+    // Every backend the device runs: the three D3D9-to-D3D11 generations
+    // always, meshshader where the device has mesh shaders.
+    std::vector<std::string> backends;
+    for (const nlohmann::json& r : records) {
+        const std::string backend = stringAt(r, "backend").value_or("?");
+        if (std::find(backends.begin(), backends.end(), backend) == backends.end()) backends.push_back(backend);
+    }
+    for (const char* required : {"hulldomain", "r2vb", "streamout"})
+        EXPECT_NE(std::find(backends.begin(), backends.end(), required), backends.end()) << required << " missing";
+    // 2 views x (lowres, continuous, adaptive with 4 metrics) per backend.
+    EXPECT_EQ(records.size(), 2u * 6u * backends.size()) << out;
 
     size_t compared = 0;
     for (const nlohmann::json& r : records) {
@@ -375,9 +397,9 @@ TEST(BackendParityBench, BackendAllAgreesOnTrianglesAndWritesATracePerBackend) {
         EXPECT_EQ(trace, (dir / ("bench-" + backend + ".json")).string());
         compared += backend != kReference;
     }
-    EXPECT_EQ(compared, 2u * 6u * 2u);
+    EXPECT_EQ(compared, 2u * 6u * (backends.size() - 1));
 
-    for (const std::string backend : {"hulldomain", "r2vb", "streamout"}) {
+    for (const std::string& backend : backends) {
         const auto path = dir / ("bench-" + backend + ".json");
         nlohmann::json trace;
         ASSERT_TRUE(readJsonFile(path, trace, error)) << path << ": " << error;

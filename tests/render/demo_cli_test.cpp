@@ -29,7 +29,7 @@ TEST(DemoCli, UnknownBackendNamesTheAvailableOnes) {
     // before the backend is looked up.
     auto run = runDemo({"--backend", "nope", "--scene", "terrain"});
     EXPECT_GT(run.exitCode, 0) << run.output;
-    for (const char* name : {"unknown backend \"nope\"", "hulldomain", "null", "r2vb", "streamout"})
+    for (const char* name : {"unknown backend \"nope\"", "hulldomain", "meshshader", "null", "r2vb", "streamout"})
         EXPECT_NE(run.output.find(name), std::string::npos) << name << " missing from: " << run.output;
 }
 

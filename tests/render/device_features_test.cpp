@@ -75,6 +75,9 @@ TEST(DeviceFeatures, ABackendNamedRefusesNamingWhatItNeeds) {
     expectOneLineError({"--backend", "hulldomain", "--hide-features", "tessellation", "--scene", "terrain",
                         "--validation"},
                        1, "it needs tessellation shaders (tessellationShader)");
+    expectOneLineError({"--backend", "meshshader", "--hide-features", "mesh-shader", "--scene", "terrain",
+                        "--validation"},
+                       1, "it needs task and mesh shaders (VK_EXT_mesh_shader)");
     const ProcessResult listed = runDemo({"--list-backends", "--hide-features", "multi-draw-indirect"});
     EXPECT_EQ(listed.exitCode, 0) << listed.output;
     EXPECT_NE(listed.output.find("missing: indirect draws with many commands and a first instance"), std::string::npos)

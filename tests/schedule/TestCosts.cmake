@@ -10,6 +10,7 @@ set_tests_properties([=[EveryBackend/TerrainCrack.NoHolesInAnyModeMetricOrLevel/
 set_tests_properties([=[EveryBackend/CrowdNearCracks.NoHolesAtAnyLevel/hulldomain  # GetParam() = "hulldomain"]=] PROPERTIES COST 137)
 set_tests_properties([=[EveryBackend/TerrainCrack.NoHolesInAnyModeMetricOrLevel/r2vb  # GetParam() = "r2vb"]=] PROPERTIES COST 137)
 set_tests_properties([=[EveryBackend/TerrainCrack.NoHolesInAnyModeMetricOrLevel/hulldomain  # GetParam() = "hulldomain"]=] PROPERTIES COST 137)
+set_tests_properties([=[EveryBackend/TerrainCrack.NoHolesInAnyModeMetricOrLevel/meshshader  # GetParam() = "meshshader"]=] PROPERTIES COST 137)
 set_tests_properties([=[EveryBackend/CrowdNearCracks.NoHolesAtAnyLevel/streamout  # GetParam() = "streamout"]=] PROPERTIES COST 109)
 set_tests_properties([=[DeviceMemoryExhaustion.StreamoutCrowdScene]=] PROPERTIES COST 105)
 set_tests_properties([=[DeviceMemoryExhaustion.R2vbCrowdScene]=] PROPERTIES COST 103)

@@ -56,6 +56,14 @@ inline ProcessResult runDemo(const std::vector<std::string>& args) {
 }
 #endif
 
+/// Whether a run failed only because the device cannot run the backend it
+/// asked for (meshshader on a device without mesh shaders): the demo says so
+/// with this hint. Tests that name every backend skip such a backend.
+inline bool deviceCannotRun(const ProcessResult& result) {
+    return result.exitCode != 0 &&
+           result.output.find("run --list-backends to see which backends this device runs") != std::string::npos;
+}
+
 /// The log's error lines ("tessera: error: ...") in a run's output.
 inline std::vector<std::string> errorLines(const std::string& output) {
     std::vector<std::string> lines;

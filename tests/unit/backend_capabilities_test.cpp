@@ -30,6 +30,7 @@ DeviceFeatures everything() {
     f.deviceName = "test device";
     f.tessellationShader = f.geometryShader = f.transformFeedback = f.pipelineStatistics = true;
     f.timestamps = f.fillModeNonSolid = f.vertexStores = f.multiDrawIndirect = true;
+    f.meshShader = f.meshShaderQueries = true;
     f.maxTessellationLevel = 64;
     return f;
 }
@@ -42,7 +43,7 @@ bool mentions(const BackendCapabilities& caps, const std::string& words) {
 } // namespace
 
 TEST(BackendCapabilities, EveryGpuBackendRunsOnAFullDevice) {
-    for (const char* name : {"r2vb", "streamout", "hulldomain"}) {
+    for (const char* name : {"r2vb", "streamout", "hulldomain", "meshshader"}) {
         const BackendCapabilities caps = capabilitiesOn(name, everything());
         EXPECT_TRUE(caps.supported()) << name;
         EXPECT_EQ(caps.terrainModes, 0b111u) << name << " draws every terrain mode";
@@ -66,6 +67,19 @@ TEST(BackendCapabilities, EmulatedBackendsNeedMultiDrawIndirect) {
     f.multiDrawIndirect = false;
     for (const char* name : {"r2vb", "streamout"}) EXPECT_TRUE(mentions(capabilitiesOn(name, f), "multiDrawIndirect")) << name;
     EXPECT_TRUE(capabilitiesOn("hulldomain", f).supported());
+}
+
+TEST(BackendCapabilities, MeshshaderNamesMissingMeshShadersAndNeedsNoTessellator) {
+    DeviceFeatures f = everything();
+    f.meshShader = false;
+    EXPECT_TRUE(mentions(capabilitiesOn("meshshader", f), "task and mesh shaders (VK_EXT_mesh_shader)"));
+    EXPECT_TRUE(capabilitiesOn("hulldomain", f).supported());
+    f = everything();
+    f.tessellationShader = false;
+    f.geometryShader = false;
+    f.transformFeedback = false;
+    EXPECT_TRUE(capabilitiesOn("meshshader", f).supported());
+    EXPECT_EQ(capabilitiesOn("meshshader", f).maxTessFactor, 64.0f);
 }
 
 TEST(BackendCapabilities, HulldomainNamesMissingTessellation) {

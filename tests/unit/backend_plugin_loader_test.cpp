@@ -31,7 +31,7 @@ PluginLoader realLoader() {
 TEST(PluginLoader, LoadsEveryShippedBackendByName) {
     auto loader = realLoader();
     BackendRegistry registry;
-    for (const char* name : {"null", "r2vb", "streamout", "hulldomain"}) {
+    for (const char* name : {"null", "r2vb", "streamout", "hulldomain", "meshshader"}) {
         ASSERT_TRUE(loader.loadBackend(name, registry).ok()) << name;
         auto backend = registry.create(name);
         ASSERT_TRUE(backend.ok());
@@ -43,7 +43,7 @@ TEST(PluginLoader, DiscoversAllBackendsAndNothingElse) {
     auto loader = realLoader();
     BackendRegistry registry;
     EXPECT_TRUE(loader.loadAll(registry).empty());
-    EXPECT_EQ(registry.names(), (std::vector<std::string>{"hulldomain", "null", "r2vb", "streamout"}));
+    EXPECT_EQ(registry.names(), (std::vector<std::string>{"hulldomain", "meshshader", "null", "r2vb", "streamout"}));
 }
 
 TEST(PluginLoader, UnknownBackendListsAvailableOnes) {
@@ -53,7 +53,7 @@ TEST(PluginLoader, UnknownBackendListsAvailableOnes) {
     ASSERT_FALSE(status.ok());
     const std::string& msg = status.error().message;
     EXPECT_NE(msg.find("unknown backend \"nope\""), std::string::npos) << msg;
-    for (const char* name : {"hulldomain", "null", "r2vb", "streamout"}) EXPECT_NE(msg.find(name), std::string::npos) << msg;
+    for (const char* name : {"hulldomain", "meshshader", "null", "r2vb", "streamout"}) EXPECT_NE(msg.find(name), std::string::npos) << msg;
 }
 
 TEST(PluginLoader, ReportsMissingFile) {

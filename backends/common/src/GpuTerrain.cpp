@@ -87,7 +87,8 @@ GpuTerrain::GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain, Det
     // Per slot, so the CPU never writes what a frame in flight still reads.
     for (uint32_t s = 0; s < gpu::kFramesInFlight; ++s) {
         const std::string suffix = std::to_string(s);
-        mSlots[s].patchStream = gpu::Buffer(device, patchCount() * sizeof(uint32_t), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+        mSlots[s].patchStream = gpu::Buffer(device, patchCount() * sizeof(uint32_t),
+                                            VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                             gpu::MemoryUsage::CpuToGpu, "terrain.visiblePatches" + suffix);
         mSlots[s].edgeErrors = gpu::Buffer(device, edgeCount() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                            gpu::MemoryUsage::CpuToGpu, "terrain.edgeErrors" + suffix);

@@ -68,6 +68,13 @@ GpuProfiler::GpuProfiler(Device& device, profiler::Profiler& profiler, uint32_t 
         TESSERA_VK_CHECK(vkCreateQueryPool(device.handle(), &info, nullptr, &mStatisticsPool));
         device.setName(VK_OBJECT_TYPE_QUERY_POOL, mStatisticsPool, "profiler.pipelineStatistics");
     }
+    if (mStatistics && features.meshShaderQueries) {
+        VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+        info.queryType = VK_QUERY_TYPE_MESH_PRIMITIVES_GENERATED_EXT;
+        info.queryCount = kMaxPassesPerFrame * framesInFlight;
+        TESSERA_VK_CHECK(vkCreateQueryPool(device.handle(), &info, nullptr, &mMeshPrimitivesPool));
+        device.setName(VK_OBJECT_TYPE_QUERY_POOL, mMeshPrimitivesPool, "profiler.meshPrimitives");
+    }
 }
 
 GpuProfiler::~GpuProfiler() {
@@ -79,6 +86,10 @@ GpuProfiler::~GpuProfiler() {
         mDevice.clearName(VK_OBJECT_TYPE_QUERY_POOL, mStatisticsPool);
         vkDestroyQueryPool(mDevice.handle(), mStatisticsPool, nullptr);
     }
+    if (mMeshPrimitivesPool) {
+        mDevice.clearName(VK_OBJECT_TYPE_QUERY_POOL, mMeshPrimitivesPool);
+        vkDestroyQueryPool(mDevice.handle(), mMeshPrimitivesPool, nullptr);
+    }
 }
 
 void GpuProfiler::beginFrame(VkCommandBuffer cmd, uint32_t slot, uint64_t frameIndex) {
@@ -89,6 +100,8 @@ void GpuProfiler::beginFrame(VkCommandBuffer cmd, uint32_t slot, uint64_t frameI
     s.pending = false;
     if (mTimestampPool) vkCmdResetQueryPool(cmd, mTimestampPool, 2 * kMaxPassesPerFrame * slot, 2 * kMaxPassesPerFrame);
     if (mStatisticsPool) vkCmdResetQueryPool(cmd, mStatisticsPool, kMaxPassesPerFrame * slot, kMaxPassesPerFrame);
+    if (mMeshPrimitivesPool)
+        vkCmdResetQueryPool(cmd, mMeshPrimitivesPool, kMaxPassesPerFrame * slot, kMaxPassesPerFrame);
 }
 
 void GpuProfiler::beginPass(VkCommandBuffer cmd, const char* name) {
@@ -111,6 +124,7 @@ void GpuProfiler::beginPass(VkCommandBuffer cmd, const char* name) {
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, mTimestampPool,
                              2 * (kMaxPassesPerFrame * mRecordingSlot + pass));
     if (mStatisticsPool) vkCmdBeginQuery(cmd, mStatisticsPool, kMaxPassesPerFrame * mRecordingSlot + pass, 0);
+    if (mMeshPrimitivesPool) vkCmdBeginQuery(cmd, mMeshPrimitivesPool, kMaxPassesPerFrame * mRecordingSlot + pass, 0);
 }
 
 void GpuProfiler::endPass(VkCommandBuffer cmd) {
@@ -123,6 +137,7 @@ void GpuProfiler::endPass(VkCommandBuffer cmd) {
     Slot& s = mSlots[mRecordingSlot];
     const uint32_t pass = static_cast<uint32_t>(s.passes.size() - 1);
     if (mStatisticsPool) vkCmdEndQuery(cmd, mStatisticsPool, kMaxPassesPerFrame * mRecordingSlot + pass);
+    if (mMeshPrimitivesPool) vkCmdEndQuery(cmd, mMeshPrimitivesPool, kMaxPassesPerFrame * mRecordingSlot + pass);
     if (mTimestampPool)
         vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, mTimestampPool,
                              2 * (kMaxPassesPerFrame * mRecordingSlot + pass) + 1);
@@ -151,6 +166,11 @@ void GpuProfiler::collect(uint32_t slot) {
                                                stats.size() * sizeof(uint64_t), stats.data(),
                                                mStatisticCount * sizeof(uint64_t),
                                                VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    std::vector<uint64_t> meshPrimitives(mMeshPrimitivesPool ? count : 0, 0);
+    if (mMeshPrimitivesPool)
+        TESSERA_VK_CHECK(vkGetQueryPoolResults(mDevice.handle(), mMeshPrimitivesPool, kMaxPassesPerFrame * slot, count,
+                                               meshPrimitives.size() * sizeof(uint64_t), meshPrimitives.data(),
+                                               sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
 
     // GPU ticks have their own epoch. The first frame's first timestamp is
     // anchored at its CPU submission time, and every later frame reuses that
@@ -179,6 +199,7 @@ void GpuProfiler::collect(uint32_t slot) {
             uint32_t i = 0;
             for (const auto& f : kFields)
                 if (mStatisticFlags & f.bit) ps.*(f.field) = values[i++];
+            if (mMeshPrimitivesPool) ps.meshPrimitivesGenerated = meshPrimitives[p];
             event.stats = ps;
         }
         mProfiler.recordGpuPass(std::move(event));

@@ -53,7 +53,7 @@ void summarizeRow(const profiler::Profiler& profiler, uint64_t first, uint64_t e
         const bool drawing = pass.name == "character.tessellate" || pass.name == "character.singlePass";
         if (drawing && pass.stats && pass.frame >= statsFrame) {
             statsFrame = pass.frame;
-            row.clippingInvocations = pass.stats->clippingInvocations;
+            row.clippingInvocations = profiler::generatedPrimitivesOf(*pass.stats);
         }
     }
     const BenchSeries c = summarizeSeries(times.selectedTotals());

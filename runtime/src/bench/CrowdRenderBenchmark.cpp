@@ -74,7 +74,7 @@ void summarizeGpu(const profiler::Profiler& profiler, uint64_t first, uint64_t e
     for (const auto& pass : profiler.gpuPasses()) {
         if (pass.frame < first || pass.frame >= end) continue;
         times.add(pass, false, true);
-        if (pass.stats) triangles[pass.name].push_back(double(pass.stats->clippingInvocations));
+        if (pass.stats) triangles[pass.name].push_back(double(profiler::generatedPrimitivesOf(*pass.stats)));
     }
     row.gpuFrame = summarizeSeries(times.frameTotals());
     row.passes = times.passMedians();

@@ -60,7 +60,7 @@ void summarizeRow(const profiler::Profiler& profiler, size_t firstPass, uint64_t
         const bool mine = hasPrefix(pass.name, prefix);
         times.add(pass, mine, mine);
         if (mine && pass.stats && (pass.name == "subdiv.draw" || pass.name == "character.tessellate"))
-            row.clipped = pass.stats->clippingInvocations;
+            row.clipped = profiler::generatedPrimitivesOf(*pass.stats);
     }
     const BenchSeries s = summarizeSeries(times.selectedTotals());
     row.gpuMsMedian = s.median;

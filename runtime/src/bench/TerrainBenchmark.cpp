@@ -25,7 +25,7 @@ BenchPlan terrainPlan() {
     BenchPlan plan;
     plan.name = "terrain";
     plan.setting = setting::kTerrainBenchmark;
-    plan.comparison = {kComparisonReference, "r2vb", "streamout"};
+    plan.comparison = {kComparisonReference, "r2vb", "streamout", "meshshader"};
     plan.everyDevice = true;
     return plan;
 }
@@ -143,7 +143,7 @@ TerrainBenchRecord makeRecord(const RenderSession& session, const char* view,
         p.name = pass.name;
         p.gpuMsMedian = pass.medianMs;
         if (pass.statsMedianFrame) {
-            p.clippingInvocations = pass.statsMedianFrame->clippingInvocations;
+            p.clippingInvocations = profiler::generatedPrimitivesOf(*pass.statsMedianFrame);
             p.vertexShaderInvocations = pass.statsMedianFrame->vertexShaderInvocations;
             p.tessEvaluationInvocations = pass.statsMedianFrame->tessEvaluationInvocations;
             p.geometryShaderInvocations = pass.statsMedianFrame->geometryShaderInvocations;

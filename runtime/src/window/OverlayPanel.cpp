@@ -68,8 +68,10 @@ void drawCountsSection(SceneRun& run, const FrameStats& stats) {
                 static_cast<unsigned long long>(s.fragmentShaderInvocations),
                 static_cast<unsigned long long>(s.computeShaderInvocations));
     if (s.taskShaderInvocations || s.meshShaderInvocations)
-        ImGui::Text("  task shader %llu, mesh shader %llu", static_cast<unsigned long long>(s.taskShaderInvocations),
-                    static_cast<unsigned long long>(s.meshShaderInvocations));
+        ImGui::Text("  task shader %llu, mesh shader %llu, mesh primitives %llu",
+                    static_cast<unsigned long long>(s.taskShaderInvocations),
+                    static_cast<unsigned long long>(s.meshShaderInvocations),
+                    static_cast<unsigned long long>(s.meshPrimitivesGenerated));
 }
 
 void drawTerrainControls(SceneRun& run) {

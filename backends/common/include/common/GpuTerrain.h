@@ -71,7 +71,8 @@ public:
     gpu::Buffer& quadIndices() { return mQuadIndices; }
 
     /// Writes this frame's visible patch indices into the slot's instance
-    /// stream and returns the buffer to bind as a per-instance vertex stream.
+    /// stream and returns the buffer to bind as a per-instance vertex stream
+    /// (or, for the task stage, as a storage buffer).
     gpu::Buffer& writeVisiblePatches(uint32_t slot, std::span<const uint32_t> patches);
 
     /// The slot's copies of TerrainDetail's edge and patch errors (metres),

@@ -9,6 +9,7 @@ const char* toString(TessellationPath path) {
     case TessellationPath::None: return "none";
     case TessellationPath::Emulated: return "emulated";
     case TessellationPath::Hardware: return "hardware";
+    case TessellationPath::Mesh: return "mesh";
     }
     return "?";
 }

@@ -1,6 +1,7 @@
 #pragma once
 /// @file PipelineStatistics.h
-/// The Vulkan pipeline-statistics counters of one GPU pass, CPU-side.
+/// The Vulkan pipeline-statistics counters of one GPU pass, and the mesh
+/// primitives generated, CPU-side.
 ///
 /// Field for field this is VkQueryPipelineStatisticFlagBits (core Vulkan 1.0,
 /// and VK_EXT_mesh_shader's task and mesh invocations) minus the Vulkan
@@ -32,6 +33,10 @@ struct PipelineStatistics {
     /// invocation), so compare them on one device only.
     uint64_t taskShaderInvocations = 0;
     uint64_t meshShaderInvocations = 0;
+    /// Primitives the mesh shaders emitted (VK_EXT_mesh_shader's own query,
+    /// not a pipeline statistic): a mesh pass's triangles before clipping,
+    /// as clippingInvocations are a tessellating pass's.
+    uint64_t meshPrimitivesGenerated = 0;
 };
 
 /// Calls `fn(name, memberPointer)` for every counter in declaration order, so
@@ -52,9 +57,10 @@ constexpr void forEachPipelineStatistic(Fn&& fn) {
     fn("computeShaderInvocations", &S::computeShaderInvocations);
     fn("taskShaderInvocations", &S::taskShaderInvocations);
     fn("meshShaderInvocations", &S::meshShaderInvocations);
+    fn("meshPrimitivesGenerated", &S::meshPrimitivesGenerated);
 }
 // A field added above without adding it to forEachPipelineStatistic fails here.
-static_assert(sizeof(PipelineStatistics) == 13 * sizeof(uint64_t),
+static_assert(sizeof(PipelineStatistics) == 14 * sizeof(uint64_t),
               "update forEachPipelineStatistic() with the new counter");
 
 /// Adds every counter of `rhs` to `lhs` (summing passes into a frame).
@@ -79,6 +85,14 @@ constexpr PipelineStatistics& operator+=(PipelineStatistics& lhs, const Pipeline
 /// - Compute passes, and passes whose primitives never reach the clipper
 ///   (rasterizer discard: transform-feedback and stream-out passes), report 0:
 ///   their input points are data, not triangles.
+/// Primitives a pass generated for the clipper (the tessellator's or the mesh
+/// shaders' triangles, before clipping and culling): clippingInvocations, or,
+/// for a mesh-shader pass on a device that counts none there (lavapipe), the
+/// mesh primitives generated. The backends' "same triangles" comparisons use it.
+constexpr uint64_t generatedPrimitivesOf(const PipelineStatistics& s) {
+    return s.clippingInvocations != 0 ? s.clippingInvocations : s.meshPrimitivesGenerated;
+}
+
 constexpr uint64_t trianglesOf(const PipelineStatistics& s) {
     if (s.clippingPrimitives != 0) return s.clippingPrimitives;
     if (s.clippingInvocations == 0 && s.fragmentShaderInvocations == 0) return 0;

@@ -62,6 +62,8 @@ private:
     profiler::Profiler& mProfiler;
     VkQueryPool mTimestampPool = VK_NULL_HANDLE;
     VkQueryPool mStatisticsPool = VK_NULL_HANDLE;
+    /// VK_QUERY_TYPE_MESH_PRIMITIVES_GENERATED_EXT, where the device has it.
+    VkQueryPool mMeshPrimitivesPool = VK_NULL_HANDLE;
     VkQueryPipelineStatisticFlags mStatisticFlags = 0;
     uint32_t mStatisticCount = 0;
     bool mTimestamps = false;

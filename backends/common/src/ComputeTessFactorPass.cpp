@@ -1,4 +1,4 @@
-#include "HulldomainTessFactorPass.h"
+#include "common/ComputeTessFactorPass.h"
 
 #include "common/TerrainBindings.h"
 #include "tessera/gpu/Barriers.h"
@@ -8,11 +8,11 @@
 #include "tessera/shaders/FrameUniforms.h"
 #include "tessera/shaders/TerrainUniforms.h"
 
-#include "hulldomain_terrain_factors.comp.spv.h"
+#include "terrain_factors.comp.spv.h"
 
 namespace tessera::backends {
 
-HulldomainTessFactorPass::HulldomainTessFactorPass(gpu::Device& device, const std::string& backendName) {
+ComputeTessFactorPass::ComputeTessFactorPass(gpu::Device& device, const std::string& backendName) {
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
     mLayout = terrainLayout(device, compute,
                             {{TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, compute},
@@ -22,11 +22,12 @@ HulldomainTessFactorPass::HulldomainTessFactorPass(gpu::Device& device, const st
                              {TS_BINDING_PATCH_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute}},
                             0, 0, backendName + ".terrainFactors.layout");
     mPipeline =
-        gpu::ComputePipeline(device, mLayout, hulldomain_terrain_factors_comp_spv, backendName + ".terrainFactors");
+        gpu::ComputePipeline(device, mLayout, terrain_factors_comp_spv, backendName + ".terrainFactors");
 }
 
-void HulldomainTessFactorPass::record(gpu::FrameContext& frame, GpuTerrain& terrain,
-                                      const gpu::UniformSlice& tessUniforms, const PushTerrainBindings& pushBindings) {
+void ComputeTessFactorPass::record(gpu::FrameContext& frame, GpuTerrain& terrain,
+                                   const gpu::UniformSlice& tessUniforms, const PushTerrainBindings& pushBindings,
+                                   VkPipelineStageFlags2 reader) {
     gpu::PassScope pass(frame, "terrain.factors");
     VkCommandBuffer cmd = frame.cmd();
     const uint32_t slot = frame.slot();
@@ -47,7 +48,7 @@ void HulldomainTessFactorPass::record(gpu::FrameContext& frame, GpuTerrain& terr
     vkCmdDispatch(cmd, (invocations + 63) / 64, 1, 1);
 
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+                       reader, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
 
 } // namespace tessera::backends

@@ -1,0 +1,83 @@
+// meshshader: the D3D12-Ultimate-style backend (VK_EXT_mesh_shader). The
+// fixed-function tessellator is gone: a compute pre-pass writes one level
+// per control-mesh edge (shared with hulldomain), then task shaders read
+// each visible patch's levels, cull it on its displaced bounds and launch
+// one mesh workgroup per piece of its D3D11 pattern, and mesh shaders place
+// and evaluate the piece's points, bit-exact with the hardware tessellator
+// up to level 64 (TessMeshPattern.h).
+#include "common/BackendPlugin.h"
+#include "common/BasicCharacterBackend.h"
+#include "common/ComputeTessFactorPass.h"
+#include "MeshshaderTerrainPass.h"
+
+namespace tessera::backends {
+namespace {
+
+class MeshshaderBackend final : public BasicCharacterBackend {
+protected:
+    backend::BackendCapabilities describeCapabilities() const override {
+        backend::BackendCapabilities caps;
+        caps.name = "meshshader";
+        caps.description = "D3D12-style: compute factor pre-pass, task and mesh shaders generating the patterns";
+        caps.tessellation = backend::TessellationPath::Mesh;
+        caps.usesCompute = true;
+        caps.usesMeshShaders = true;
+        caps.maxTessFactor = 64.0f;
+        caps.terrainModes = 0b111;
+        return caps;
+    }
+
+    // D3D12-class: the full look's terrain shading runs in compute, as on
+    // hulldomain.
+    TerrainResolvePass::Mode terrainResolveMode() const override { return TerrainResolvePass::Mode::Compute; }
+
+    Status initializeTechnique(const backend::BackendInitInfo& info) override {
+        mFactorPass = ComputeTessFactorPass(*mDevice, "meshshader");
+        mTerrainPass = MeshshaderTerrainPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
+                                             static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
+        return {};
+    }
+
+    void shutdownTechnique() override {
+        mFactorPass = {};
+        mTerrainPass = {};
+    }
+
+    VkBufferUsageFlags compressedCageUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
+    void skinCharacter(const CharacterInstance&) override {}
+    void drawCharacter(const CharacterInstance&, backend::CharacterPath) override {}
+
+    void drawTessellated(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw) override {
+        const terrain::TessellationSettings& settings = draw.tessellation;
+        const bool continuous = settings.mode == backend::TerrainMode::Continuous;
+        const gpu::UniformSlice tessUniforms = pushTessUniforms(terrain, settings, 64.0f);
+        // The technique's intermediates: the pre-pass's level buffers, one
+        // pair per frame in flight, and the pattern tables.
+        mReport.intermediateBytes = mTerrainPass.tableBytes();
+        for (uint32_t slot = 0; slot < gpu::kFramesInFlight; ++slot)
+            mReport.intermediateBytes += terrain.edgeLevels(slot).size() + terrain.patchLevels(slot).size();
+        // Continuous mode has one level for the draw: no per-edge pre-pass.
+        if (!continuous)
+            mFactorPass.record(*mFrame, terrain, tessUniforms, terrainPush(terrain),
+                               VK_PIPELINE_STAGE_2_TASK_SHADER_BIT_EXT);
+
+        ensureMainPass();
+        gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");
+        if (draw.visiblePatches.empty()) return;
+        mTerrainPass.record(*mFrame, terrain, draw.visiblePatches, tessUniforms, terrainPush(terrain),
+                            mFrameInfo.wireframe);
+        mReport.terrainPatchesDrawn += static_cast<uint32_t>(draw.visiblePatches.size());
+        ++mReport.passes;
+    }
+
+private:
+    ComputeTessFactorPass mFactorPass;
+    MeshshaderTerrainPass mTerrainPass;
+};
+
+} // namespace
+} // namespace tessera::backends
+
+TESSERA_REGISTER_PLUGIN(registry) {
+    registry.registerBackend(tessera::backends::backendPlugin<tessera::backends::MeshshaderBackend>("meshshader"));
+}
