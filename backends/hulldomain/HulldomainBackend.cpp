@@ -4,13 +4,13 @@
 #include "common/BackendPlugin.h"
 #include "common/BasicCharacterBackend.h"
 #include "common/CommandHelpers.h"
+#include "common/ComputeCharacterSkinPass.h"
 #include "common/ComputeTessFactorPass.h"
 #include "common/CrowdDescriptors.h"
 #include "common/FillWirePipelines.h"
 #include "common/TerrainBindings.h"
 #include "tessera/shaders/FrameUniforms.h"
 #include "HulldomainCharacterPatchPass.h"
-#include "HulldomainCharacterSkinPass.h"
 #include "HulldomainCrowdPass.h"
 #include "HulldomainSubdivPass.h"
 
@@ -43,7 +43,7 @@ protected:
 
     Status initializeTechnique(const backend::BackendInitInfo& info) override {
         mFactorPass = ComputeTessFactorPass(*mDevice, "hulldomain");
-        mCharacterSkin = HulldomainCharacterSkinPass(*mDevice);
+        mCharacterSkin = ComputeCharacterSkinPass(*mDevice, "hulldomain");
         mCharacterPatches = HulldomainCharacterPatchPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
                                                          static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
         mCrowdPass = HulldomainCrowdPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
@@ -110,7 +110,7 @@ protected:
     }
 
     void skinCharacter(const CharacterInstance& instance) override {
-        mCharacterSkin.record(*mFrame, instance, characterPush());
+        mCharacterSkin.record(*mFrame, instance, characterPush(), VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT);
     }
 
     void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) override {
@@ -157,7 +157,7 @@ private:
     ComputeTessFactorPass mFactorPass;
     HulldomainCrowdPass mCrowdPass;
     HulldomainSubdivPass mSubdivPass;
-    HulldomainCharacterSkinPass mCharacterSkin;
+    ComputeCharacterSkinPass mCharacterSkin;
     HulldomainCharacterPatchPass mCharacterPatches;
     gpu::PipelineLayout mLayout;
     FillWirePipelines mPipelines;

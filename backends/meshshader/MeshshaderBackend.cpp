@@ -4,10 +4,15 @@
 // each visible patch's levels, cull it on its displaced bounds and launch
 // one mesh workgroup per piece of its D3D11 pattern, and mesh shaders place
 // and evaluate the piece's points, bit-exact with the hardware tessellator
-// up to level 64 (TessMeshPattern.h).
+// up to level 64 (TessMeshPattern.h). Characters take the same two passes
+// as hulldomain's, the second through task and mesh shaders: compute skins
+// the cage once into 128-bit compressed vertices, then a mesh workgroup per
+// piece of each cage triangle's pattern evaluates Listing 8 at its points.
 #include "common/BackendPlugin.h"
 #include "common/BasicCharacterBackend.h"
+#include "common/ComputeCharacterSkinPass.h"
 #include "common/ComputeTessFactorPass.h"
+#include "MeshshaderCharacterPass.h"
 #include "MeshshaderTerrainPass.h"
 
 namespace tessera::backends {
@@ -33,19 +38,28 @@ protected:
 
     Status initializeTechnique(const backend::BackendInitInfo& info) override {
         mFactorPass = ComputeTessFactorPass(*mDevice, "meshshader");
-        mTerrainPass = MeshshaderTerrainPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
-                                             static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
+        const auto color = static_cast<VkFormat>(info.colorFormat);
+        const auto depth = static_cast<VkFormat>(info.depthFormat);
+        mTerrainPass = MeshshaderTerrainPass(*mDevice, color, depth, mWireframeSupported);
+        mCharacterSkin = ComputeCharacterSkinPass(*mDevice, "meshshader");
+        mCharacterPatches = MeshshaderCharacterPass(*mDevice, color, depth, mWireframeSupported);
         return {};
     }
 
     void shutdownTechnique() override {
         mFactorPass = {};
         mTerrainPass = {};
+        mCharacterSkin = {};
+        mCharacterPatches = {};
     }
 
     VkBufferUsageFlags compressedCageUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
-    void skinCharacter(const CharacterInstance&) override {}
-    void drawCharacter(const CharacterInstance&, backend::CharacterPath) override {}
+    void skinCharacter(const CharacterInstance& instance) override {
+        mCharacterSkin.record(*mFrame, instance, characterPush(), VK_PIPELINE_STAGE_2_MESH_SHADER_BIT_EXT);
+    }
+    void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) override {
+        mCharacterPatches.record(*mFrame, instance, path, mFrameInfo.wireframe, characterPush());
+    }
 
     void drawTessellated(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw) override {
         const terrain::TessellationSettings& settings = draw.tessellation;
@@ -73,6 +87,8 @@ protected:
 private:
     ComputeTessFactorPass mFactorPass;
     MeshshaderTerrainPass mTerrainPass;
+    ComputeCharacterSkinPass mCharacterSkin;
+    MeshshaderCharacterPass mCharacterPatches;
 };
 
 } // namespace

@@ -19,21 +19,12 @@ constexpr VkShaderStageFlags kStages =
 // One task workgroup per 32 visible patches (meshshader_terrain.glsl).
 constexpr uint32_t kPatchesPerTask = 32;
 
-template <class T>
-gpu::Buffer uploadTable(gpu::Device& device, std::span<const T> items, const char* name) {
-    gpu::Buffer buffer(device, items.size_bytes(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
-                       name);
-    buffer.upload(items);
-    return buffer;
-}
-
 } // namespace
 
 MeshshaderTerrainPass::MeshshaderTerrainPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat,
                                              bool wireframe) {
     const tessellator::MeshPatternLibrary& library = tessellator::MeshPatternLibrary::quadFractionalOdd();
-    mKeys = uploadTable(device, library.keys(), "meshshader.terrain.patternKeys");
-    mTriangles = uploadTable(device, library.triangles(), "meshshader.terrain.patternTriangles");
+    mTables = MeshshaderPatternTables(device, library.keys(), library.triangles(), "meshshader.terrain");
     constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     mLayout = terrainLayout(device, kStages,
                             {{TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kStages},
@@ -64,15 +55,14 @@ void MeshshaderTerrainPass::record(gpu::FrameContext& frame, GpuTerrain& terrain
     const VkDescriptorBufferInfo tess = tessUniforms.descriptor();
     const VkDescriptorBufferInfo edgeLevels{terrain.edgeLevels(slot).handle(), 0, VK_WHOLE_SIZE};
     const VkDescriptorBufferInfo patchLevels{terrain.patchLevels(slot).handle(), 0, VK_WHOLE_SIZE};
-    const VkDescriptorBufferInfo keys{mKeys.handle(), 0, VK_WHOLE_SIZE};
-    const VkDescriptorBufferInfo triangles{mTriangles.handle(), 0, VK_WHOLE_SIZE};
+    const auto tables = mTables.descriptors();
     const VkDescriptorBufferInfo visible{patches.handle(), 0, VK_WHOLE_SIZE};
     constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     const VkWriteDescriptorSet writes[6] = {bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tess),
                                             bufferWrite(TS_BINDING_EDGE_LEVELS, storage, &edgeLevels),
                                             bufferWrite(TS_BINDING_PATCH_LEVELS, storage, &patchLevels),
-                                            bufferWrite(TS_BINDING_MESH_KEYS, storage, &keys),
-                                            bufferWrite(TS_BINDING_MESH_TRIANGLES, storage, &triangles),
+                                            bufferWrite(TS_BINDING_MESH_KEYS, storage, &tables[0]),
+                                            bufferWrite(TS_BINDING_MESH_TRIANGLES, storage, &tables[1]),
                                             bufferWrite(TS_BINDING_MESH_PATCHES, storage, &visible)};
     pushBindings(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, writes);
     const auto count = static_cast<uint32_t>(visiblePatches.size());

@@ -9,7 +9,7 @@
 #include "common/FillWirePipelines.h"
 #include "common/GpuTerrain.h"
 #include "common/TerrainBindings.h"
-#include "tessera/gpu/Buffer.h"
+#include "MeshshaderPatternTables.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/PipelineLayout.h"
 
@@ -28,13 +28,12 @@ public:
                 const gpu::UniformSlice& tessUniforms, const PushTerrainBindings& pushBindings, bool wireframe);
 
     /// Bytes of the pattern tables.
-    uint64_t tableBytes() const { return mKeys.size() + mTriangles.size(); }
+    uint64_t tableBytes() const { return mTables.bytes(); }
 
 private:
     gpu::PipelineLayout mLayout;
     FillWirePipelines mPipelines;
-    gpu::Buffer mKeys;
-    gpu::Buffer mTriangles;
+    MeshshaderPatternTables mTables;
 };
 
 } // namespace tessera::backends

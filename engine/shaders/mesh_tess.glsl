@@ -1,11 +1,14 @@
 // mesh_tess.glsl: the mesh-shader tessellator's tables and the work of one
-// piece (TessMeshPattern.h): which key it draws and each of its points and
-// triangles. The meshshader backend's terrain mesh shader and the GPU test
-// that captures its patterns both call these, so the test checks the
-// backend's own code.
+// piece: which key it draws and each of its points and triangles, for quad
+// patches (TessMeshPattern.h: the terrain) and uniform-level triangle
+// patches (TessMeshTrianglePattern.h: characters, the crowd's near tier).
+// A pipeline binds one domain's tables. The meshshader backend's mesh
+// shaders and the GPU test that captures their patterns both call these, so
+// the test checks the backend's own code.
 #ifndef MESH_TESS_GLSL
 #define MESH_TESS_GLSL
 #include "tessera/shaders/TessMeshPattern.h"
+#include "tessera/shaders/TessMeshTrianglePattern.h"
 
 layout(std430, set = 0, binding = TS_BINDING_MESH_KEYS) readonly buffer MeshKeys {
     TsMeshKey tsMeshKeys[];
@@ -24,6 +27,16 @@ uvec4 tsMeshPieceEntry(TsMeshPatch p, uint piece) {
 vec2 tsMeshLocalPoint(TsMeshPatch p, uint piece, uvec4 entry, uint local) {
     uint row = local < entry.z ? 0u : 1u;
     return tsMeshPiecePoint(p, piece, row, local - row * entry.z);
+}
+
+// The same for a uniform-level triangle patch; the point is (u, v, w).
+uvec4 tsMeshTrianglePieceEntry(TsMeshTrianglePatch p, uint piece) {
+    return tsMeshKeys[tsMeshTrianglePieceKey(p, piece)].entry;
+}
+
+vec3 tsMeshTriangleLocalPoint(TsMeshTrianglePatch p, uint piece, uvec4 entry, uint local) {
+    uint row = local < entry.z ? 0u : 1u;
+    return tsMeshTrianglePiecePoint(p, piece, row, local - row * entry.z);
 }
 
 // Local point indices of triangle `t` of the piece.

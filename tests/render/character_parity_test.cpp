@@ -51,6 +51,13 @@ struct ParityRun {
     std::string error;                 ///< why `triangles` is missing
 };
 
+/// The pass that tessellates the creature: the characters scene draws
+/// two-pass as an instanced crowd where the backend has them.
+std::string tessellationPass(const std::string& backend, const std::string& path) {
+    if (path != "two-pass") return "character.singlePass";
+    return backend == "meshshader" ? "character.tessellate" : "crowd.near";
+}
+
 ParityRun runPoseAnew(const std::string& backend, const std::string& path, const std::string& level) {
     const auto dir = testOutputDir("character_parity");
     const std::string stem = (dir / (backend + "_" + path + "_l" + level)).string();
@@ -61,9 +68,7 @@ ParityRun runPoseAnew(const std::string& backend, const std::string& path, const
     std::filesystem::remove(stem + ".json");
     run.shot = runDemoShot(args, stem + ".png");
     if (run.shot.result.exitCode == 0)
-        run.triangles = passTriangles(stem + ".json",
-                                      // The characters scene draws two-pass as an instanced crowd.
-                                      path == "two-pass" ? "crowd.near" : "character.singlePass", run.error);
+        run.triangles = passTriangles(stem + ".json", tessellationPass(backend, path), run.error);
     return run;
 }
 
@@ -136,6 +141,26 @@ TEST(CharacterParity, EmulatedBackendsMatchHulldomain) {
     std::cout << "[character parity] crowd.near triangles: " << *reference.triangles << "\n";
 }
 
+// meshshader against hulldomain on both paths. Two-pass, hulldomain draws
+// the creature as an instanced crowd's near tier and meshshader, which has no
+// instanced crowds, through its character passes: the same cage, level and
+// patterns, so the same triangles.
+TEST(CharacterParity, MeshshaderMatchesHulldomain) {
+    const ParityRun probe = runPosed("meshshader", "single-pass", "7.5");
+    if (deviceCannotRun(probe.shot.result)) GTEST_SKIP() << "the device cannot run meshshader";
+    for (const char* path : {"single-pass", "two-pass"}) {
+        SCOPED_TRACE(path);
+        const ParityRun& reference = runPosed("hulldomain", path, "7.5");
+        const ParityRun& run = runPosed("meshshader", path, "7.5");
+        expectClean(reference);
+        expectClean(run);
+        if (run.triangles && reference.triangles) {
+            EXPECT_EQ(*run.triangles, *reference.triangles) << run.shot.command << "\n  " << reference.shot.command;
+        }
+        expectImagesMatch(run, reference, kParityTolerance, std::string("meshshader_") + path + "_vs_hulldomain");
+    }
+}
+
 TEST(CharacterParity, TwoPassMatchesSinglePass) {
     const ParityRun twoPass = runPosed("hulldomain", "two-pass", "7.5");
     const ParityRun singlePass = runPosed("hulldomain", "single-pass", "7.5");
@@ -165,7 +190,7 @@ TEST(CharacterParity, DetectsAChangedLevel) {
 // The characters scene as the issue checks it (crowd, CesiumMan, terrain),
 // a few frames on every backend, under the validation layer.
 TEST(CharacterParity, CharactersSceneRunsOnEveryBackend) {
-    for (const char* backend : {"hulldomain", "r2vb", "streamout"}) {
+    for (const char* backend : {"hulldomain", "r2vb", "streamout", "meshshader"}) {
         const std::vector<std::string> args = {"--scene", "characters", "--backend", backend, "--frames",    "3",
                                                "--width", "320",        "--height",  "240",   "--validation"};
         const auto run = runDemo(args);

@@ -22,7 +22,14 @@ inline std::optional<uint64_t> passTriangles(const std::string& path, const std:
         for (const nlohmann::json& pass : *passes) {
             if (stringAt(pass, "name") != passName) continue;
             const nlohmann::json* stats = memberOf(pass, "statsMedianFrame");
-            if (auto n = stats ? numberAt(*stats, "clippingInvocations") : std::nullopt) return uint64_t(*n);
+            if (!stats) continue;
+            // Triangles generated for the clipper (profiler::generatedPrimitivesOf):
+            // a device may count none there for a mesh-shader pass.
+            const auto clipped = numberAt(*stats, "clippingInvocations");
+            const auto meshed = numberAt(*stats, "meshPrimitivesGenerated");
+            if (clipped && *clipped > 0) return uint64_t(*clipped);
+            if (meshed && *meshed > 0) return uint64_t(*meshed);
+            if (clipped) return uint64_t(*clipped);
         }
     error = path + ": no pipeline statistics for pass " + passName;
     return std::nullopt;

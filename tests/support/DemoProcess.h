@@ -64,6 +64,21 @@ inline bool deviceCannotRun(const ProcessResult& result) {
            result.output.find("run --list-backends to see which backends this device runs") != std::string::npos;
 }
 
+#ifdef TESSERA_DEMO_EXE
+/// Whether the default device runs `backend`, from --list-backends (asked
+/// once per process): tests that name every backend skip the ones it cannot.
+inline bool deviceRunsBackend(const std::string& backend) {
+    static const std::string listing = runDemo({"--list-backends"}).output;
+    std::istringstream in(listing);
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream words(line);
+        std::string name, state;
+        if (words >> name >> state && name == backend) return state == "ok";
+    }
+    return false;
+}
+#endif
+
 /// The log's error lines ("tessera: error: ...") in a run's output.
 inline std::vector<std::string> errorLines(const std::string& output) {
     std::vector<std::string> lines;

@@ -16,7 +16,8 @@ namespace tessera::backends {
 
 gpu::PipelineLayout characterLayout(gpu::Device& device, CharacterBindings bindings, VkShaderStageFlags stages,
                                     VkDescriptorType cageType, uint32_t pushConstantBytes,
-                                    VkShaderStageFlags pushConstantStages, std::string name) {
+                                    VkShaderStageFlags pushConstantStages, std::string name,
+                                    std::initializer_list<gpu::BindingDesc> extra) {
     std::vector<gpu::BindingDesc> layout = {{TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
                                             {TS_BINDING_CHARACTER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages},
                                             {TS_BINDING_CHARACTER_PALETTE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages}};
@@ -27,6 +28,7 @@ gpu::PipelineLayout characterLayout(gpu::Device& device, CharacterBindings bindi
     if (bindings == CharacterBindings::Draw)
         for (uint32_t binding : {TS_BINDING_BASE_COLOR, TS_BINDING_NORMAL_MAP, TS_BINDING_DISPLACEMENT})
             layout.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages});
+    layout.insert(layout.end(), extra.begin(), extra.end());
     return gpu::PipelineLayout(device, layout, pushConstantBytes, pushConstantStages, std::move(name));
 }
 

@@ -102,7 +102,8 @@ Result<std::unique_ptr<GpuCharacter>> GpuCharacter::create(gpu::Device& device, 
     c->mVertexTexels = gpu::BufferView(device, c->mVertices, VK_FORMAT_R32G32B32A32_UINT, 0, vertexBytes,
                                        name + ".cageVertexTexels");
     c->mIndices = gpu::Buffer(device, cage.indices.size() * sizeof(uint32_t),
-                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT |
+                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                               gpu::MemoryUsage::GpuOnly, name + ".cageIndices");
     c->mIndices.upload(std::span<const uint32_t>(cage.indices));
     c->mGpuVertices = gpuVertices;

@@ -25,6 +25,7 @@
 #include "common/GpuObjectTable.h"
 
 #include <functional>
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <vector>
@@ -49,9 +50,11 @@ enum class CharacterBindings { Skin, Draw };
 /// palette, and the maps for Draw) plus the cage and the compressed cage as
 /// `cageType` when the technique reads them through descriptors
 /// (VK_DESCRIPTOR_TYPE_MAX_ENUM when it takes the cage as a vertex stream).
+/// `extra` follows them (the technique's own bindings).
 gpu::PipelineLayout characterLayout(gpu::Device& device, CharacterBindings bindings, VkShaderStageFlags stages,
                                     VkDescriptorType cageType, uint32_t pushConstantBytes,
-                                    VkShaderStageFlags pushConstantStages, std::string name);
+                                    VkShaderStageFlags pushConstantStages, std::string name,
+                                    std::initializer_list<gpu::BindingDesc> extra = {});
 
 /// How a backend's character pass objects push their descriptors through the
 /// backend, so the pass classes stay separate from the backend class.

@@ -45,7 +45,9 @@
 /// Pieces of the densest patch: 4 strips, 4 sides of 30 ring pairs, the centre.
 #define TS_MESH_MAX_PIECES 125u
 
-/// Bindings of the mesh-shader terrain draw (after the terrain's).
+/// Bindings of the mesh-shader draws (after the terrain's or the
+/// character's): the pattern tables, and the patches the task stage expands
+/// (the terrain's visible patch indices, a cage's triangle indices).
 #define TS_BINDING_MESH_KEYS 8
 #define TS_BINDING_MESH_TRIANGLES 9
 #define TS_BINDING_MESH_PATCHES 23

@@ -1,4 +1,4 @@
-#include "HulldomainCharacterSkinPass.h"
+#include "common/ComputeCharacterSkinPass.h"
 
 #include "tessera/gpu/Barriers.h"
 
@@ -6,19 +6,19 @@
 #include "tessera/shaders/FrameUniforms.h"
 #include "tessera/gpu/FrameContext.h"
 
-#include "hulldomain_character_skin.comp.spv.h"
+#include "character_skin.comp.spv.h"
 
 namespace tessera::backends {
 
-HulldomainCharacterSkinPass::HulldomainCharacterSkinPass(gpu::Device& device) {
+ComputeCharacterSkinPass::ComputeCharacterSkinPass(gpu::Device& device, const std::string& backendName) {
     const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
     mLayout = characterLayout(device, CharacterBindings::Skin, compute, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 0, 0,
-                              "hulldomain.characterSkin.layout");
-    mPipeline = gpu::ComputePipeline(device, mLayout, hulldomain_character_skin_comp_spv, "hulldomain.characterSkin");
+                              backendName + ".characterSkin.layout");
+    mPipeline = gpu::ComputePipeline(device, mLayout, character_skin_comp_spv, backendName + ".characterSkin");
 }
 
-void HulldomainCharacterSkinPass::record(gpu::FrameContext& frame, const CharacterInstance& instance,
-                                         const CharacterPushFn& push) {
+void ComputeCharacterSkinPass::record(gpu::FrameContext& frame, const CharacterInstance& instance,
+                                      const CharacterPushFn& push, VkPipelineStageFlags2 reader) {
     VkCommandBuffer cmd = frame.cmd();
     GpuCharacter& c = *instance.character;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mPipeline.handle());
@@ -30,7 +30,7 @@ void HulldomainCharacterSkinPass::record(gpu::FrameContext& frame, const Charact
     push(VK_PIPELINE_BIND_POINT_COMPUTE, CharacterBindings::Skin, mLayout, instance, writes);
     vkCmdDispatch(cmd, (c.vertexCount() + 63) / 64, 1, 1);
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+                       reader, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
 }
 
 } // namespace tessera::backends

@@ -1,6 +1,7 @@
 #version 450
-// hulldomain pass 1 (compute): skins each control-cage vertex once per frame
-// and stores it as the paper's 128-bit compressed vertex.
+// Pass 1 of the two-pass characters on the backends with compute (hulldomain,
+// meshshader): skins each control-cage vertex once per frame and stores it as
+// the paper's 128-bit compressed vertex.
 #extension GL_GOOGLE_include_directive : require
 #include "character_common.glsl"
 

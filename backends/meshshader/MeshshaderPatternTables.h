@@ -1,0 +1,33 @@
+#pragma once
+/// @file MeshshaderPatternTables.h
+/// One pattern library on the GPU: the key table and the packed triangles a
+/// mesh-shader tessellation draw reads (TS_BINDING_MESH_KEYS and
+/// TS_BINDING_MESH_TRIANGLES, mesh_tess.glsl), uploaded once at start-up.
+
+#include "tessera/gpu/Buffer.h"
+#include "tessera/shaders/TessMeshPattern.h"
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+
+namespace tessera::backends {
+
+class MeshshaderPatternTables {
+public:
+    MeshshaderPatternTables() = default;
+    /// Uploads `keys` and `triangles` as "`name`.patternKeys" and "`name`.patternTriangles".
+    MeshshaderPatternTables(gpu::Device& device, std::span<const shader::TsMeshKey> keys,
+                            std::span<const uint32_t> triangles, const std::string& name);
+
+    /// The two tables' descriptors, in binding order (keys, triangles).
+    std::array<VkDescriptorBufferInfo, 2> descriptors() const;
+    uint64_t bytes() const { return mKeys.size() + mTriangles.size(); }
+
+private:
+    gpu::Buffer mKeys;
+    gpu::Buffer mTriangles;
+};
+
+} // namespace tessera::backends
