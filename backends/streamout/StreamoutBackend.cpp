@@ -34,6 +34,7 @@
 #include "StreamoutSubdivBuffers.h"
 #include "StreamoutSubdivFactorPass.h"
 #include "StreamoutSubdivRefinePass.h"
+#include "tessera/shaders/TessPattern.h"
 
 #include <memory>
 
@@ -105,8 +106,12 @@ protected:
             buffers.cageRevision = terrain.heightRevision();
         }
         mCullPass.record(in, draw.visiblePatches);
-        mFactorPass.record(in, emuKeyTable());
-        return {buffers.recordsView.handle(), buffers.capacity, buffers.commands.handle(), 0};
+        const auto visible = static_cast<uint32_t>(draw.visiblePatches.size());
+        mFactorPass.record(in, emuKeyTable(), visible);
+        // Records are streamed out one after another, at most one per visible
+        // patch: the draw needs no command past those (not 5 per terrain patch).
+        return {buffers.recordsView.handle(), buffers.capacity, buffers.commands.handle(), 0,
+                visible * TS_EMU_PIECES};
     }
 
     uint64_t factorPassBytes() const override { return mBuffers.bytes(); }
