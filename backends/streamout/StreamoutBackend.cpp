@@ -3,6 +3,7 @@
 // with buffer loads, in front of the emulated tessellator; no tessellation
 // stages and no compute. Each tessellated frame:
 //   streamout.cage     the control mesh, displaced once, captured by transform feedback
+//                      (only when the height map changed since this frame slot's last capture)
 //   streamout.cull     a geometry shader drops patches outside the frustum, streams out the rest
 //   streamout.factors  draw-auto over the survivors: levels and tessellator commands, streamed out
 // then EmulatedTerrainBackend draws the pattern pieces with one indirect draw.
@@ -33,6 +34,7 @@
 #include "StreamoutSubdivBuffers.h"
 #include "StreamoutSubdivFactorPass.h"
 #include "StreamoutSubdivRefinePass.h"
+#include "tessera/shaders/TessPattern.h"
 
 #include <memory>
 
@@ -95,10 +97,21 @@ protected:
             VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT | VK_PIPELINE_STAGE_2_TRANSFER_BIT,
             VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT | VK_ACCESS_2_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT |
                 VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        mCagePass.record(in);
+        // The displaced cage depends on the height map alone: this slot
+        // re-streams it only when the heights changed (a new terrain, a
+        // crater), not every frame. Its previous writer's barrier, recorded
+        // on this queue before, already made it visible to the readers.
+        if (buffers.cageRevision != terrain.heightRevision()) {
+            mCagePass.record(in);
+            buffers.cageRevision = terrain.heightRevision();
+        }
         mCullPass.record(in, draw.visiblePatches);
-        mFactorPass.record(in, emuKeyTable());
-        return {buffers.recordsView.handle(), buffers.capacity, buffers.commands.handle(), 0};
+        const auto visible = static_cast<uint32_t>(draw.visiblePatches.size());
+        mFactorPass.record(in, emuKeyTable(), visible);
+        // Records are streamed out one after another, at most one per visible
+        // patch: the draw needs no command past those (not 5 per terrain patch).
+        return {buffers.recordsView.handle(), buffers.capacity, buffers.commands.handle(), 0,
+                visible * TS_EMU_PIECES};
     }
 
     uint64_t factorPassBytes() const override { return mBuffers.bytes(); }

@@ -34,6 +34,8 @@ public:
         gpu::Buffer commands;
         uint32_t gridVertices = 0;
         uint32_t capacity = 0; ///< records (patches) the buffers hold
+        /// GpuTerrain::heightRevision of the heights `cage` holds (0: none yet).
+        uint64_t cageRevision = 0;
     };
 
     StreamoutBuffers() = default;

@@ -60,7 +60,7 @@ StreamoutFactorPass::StreamoutFactorPass(gpu::Device& device) {
     mPipeline = gpu::Pipeline(device, desc);
 }
 
-void StreamoutFactorPass::record(const StreamoutPassInputs& in, const gpu::Buffer& keyTable) {
+void StreamoutFactorPass::record(const StreamoutPassInputs& in, const gpu::Buffer& keyTable, uint32_t visiblePatches) {
     gpu::PassScope pass(in.frame, "streamout.factors");
     VkCommandBuffer cmd = in.frame.cmd();
     const auto& fn = in.frame.device().fn();
@@ -68,8 +68,10 @@ void StreamoutFactorPass::record(const StreamoutPassInputs& in, const gpu::Buffe
     const uint32_t slot = in.frame.slot();
 
     // Commands past the survivors must draw nothing; stream output writes
-    // only the survivors' records.
-    vkCmdFillBuffer(cmd, buffers.commands.handle(), 0, VK_WHOLE_SIZE, 0);
+    // only the survivors' records. The draw issues only the visible patches'
+    // commands (no more survive the cull), so only those are cleared.
+    const VkDeviceSize drawn = VkDeviceSize(visiblePatches) * kCommandBytes;
+    vkCmdFillBuffer(cmd, buffers.commands.handle(), 0, drawn, 0);
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_TRANSFORM_FEEDBACK_BIT_EXT,
                        VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT);

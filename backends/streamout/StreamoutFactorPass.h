@@ -27,7 +27,8 @@ public:
     /// Clears the commands, records the pass, then a barrier that makes
     /// records and commands ready for the emulated draw's indirect and
     /// vertex-shader reads. `keyTable` holds shader::TsEmuKeyTable.
-    void record(const StreamoutPassInputs& in, const gpu::Buffer& keyTable);
+    /// `visiblePatches`: the draw's visible patches, a bound on the survivors.
+    void record(const StreamoutPassInputs& in, const gpu::Buffer& keyTable, uint32_t visiblePatches);
 
 private:
     gpu::PipelineLayout mLayout;

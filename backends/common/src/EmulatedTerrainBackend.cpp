@@ -151,8 +151,8 @@ void EmulatedTerrainBackend::drawTessellated(GpuTerrain& terrain, const backend:
     vkCmdBindVertexBuffers(cmd, 0, 1, &patterns, &offset);
     // The emulated unit's output: five pattern pieces per superprimitive,
     // each an indirect command the backend's own passes wrote on the GPU.
-    vkCmdDrawIndirect(cmd, source.commands, source.commandsOffset, source.capacity * TS_EMU_PIECES,
-                      sizeof(VkDrawIndirectCommand));
+    const uint32_t commands = source.commandCount ? source.commandCount : source.capacity * TS_EMU_PIECES;
+    vkCmdDrawIndirect(cmd, source.commands, source.commandsOffset, commands, sizeof(VkDrawIndirectCommand));
     mReport.terrainPatchesDrawn += static_cast<uint32_t>(draw.visiblePatches.size());
     ++mReport.passes;
 }

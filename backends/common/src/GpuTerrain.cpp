@@ -1,10 +1,21 @@
 #include "common/GpuTerrain.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 #include <cstring>
 
 namespace tessera::backends {
+namespace {
+
+/// Process-wide, so a terrain made where a destroyed one lived never
+/// inherits its revision (and a cache keyed on it).
+uint64_t nextHeightRevision() {
+    static std::atomic<uint64_t> next{1};
+    return next++;
+}
+
+} // namespace
 
 Result<std::unique_ptr<GpuTerrain>> GpuTerrain::create(gpu::Device& device, const terrain::Terrain& terrain,
                                                       std::span<const Rgba8Image> detailTextures) {
@@ -26,7 +37,7 @@ Result<std::unique_ptr<GpuTerrain>> GpuTerrain::create(gpu::Device& device, cons
 }
 
 GpuTerrain::GpuTerrain(gpu::Device& device, const terrain::Terrain& terrain, DetailTextureArray detail)
-    : mSource(terrain), mDetail(std::move(detail.image)) {
+    : mSource(terrain), mDetail(std::move(detail.image)), mHeightRevision(nextHeightRevision()) {
     const terrain::HeightField& field = terrain.field();
     const float spacing = field.scale().horizontalSpacing;
     const glm::vec2 size = field.worldSize();
@@ -118,6 +129,8 @@ void GpuTerrain::invalidateSunVisibility(const glm::vec4& region) {
         mSunDirty = glm::vec4(glm::min(glm::vec2(*mSunDirty), glm::vec2(region)),
                               glm::max(glm::vec2(mSunDirty->z, mSunDirty->w), glm::vec2(region.z, region.w)));
 }
+
+void GpuTerrain::markHeightsChanged() { mHeightRevision = nextHeightRevision(); }
 
 gpu::Buffer& GpuTerrain::writeVisiblePatches(uint32_t slot, std::span<const uint32_t> patches) {
     assert(patches.size() <= patchCount());

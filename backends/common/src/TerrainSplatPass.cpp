@@ -28,6 +28,8 @@ void TerrainSplatPass::record(gpu::FrameContext& frame, GpuTerrain& terrain, std
     if (splats.empty()) return;
     gpu::PassScope pass(frame, "terrain.splat");
     for (const auto& splat : splats) splatOne(frame.cmd(), terrain, splat);
+    // What a technique derived from the old heights is stale now.
+    terrain.markHeightsChanged();
 }
 
 void TerrainSplatPass::splatOne(VkCommandBuffer cmd, GpuTerrain& terrain, const terrain::CraterSplat& splat) {

@@ -1,5 +1,6 @@
 #version 450
-// streamout.cage: the control mesh transformed once per frame. One invocation
+// streamout.cage: the control mesh transformed once per height map (the
+// backend re-streams it only after the heights changed). One invocation
 // per grid vertex, with no vertex buffer (the vertex ID is the grid point);
 // transform feedback captures (world xyz, vertex ID) into the cage buffer,
 // which the cull and factor passes then load by ID instead of sampling the

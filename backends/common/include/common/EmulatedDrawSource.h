@@ -14,6 +14,11 @@
 ///    order; command c of record r is tsEmuCommand(outer, inner, c, r) from
 ///    emulated_tess.glsl (firstInstance = r * 5 + c). Unused commands must be
 ///    all zero (they draw nothing).
+///  - commandCount: how many commands from the start of `commands` the draw
+///    issues; 0 means all 5 * capacity. A backend whose commands are record
+///    by record and that knows an upper bound on the records it wrote
+///    (streamout: the visible patches) passes that bound, so the draw does
+///    not walk a whole terrain's worth of empty commands.
 
 #include <vulkan/vulkan.h>
 
@@ -26,6 +31,7 @@ struct EmulatedDrawSource {
     uint32_t capacity = 0;
     VkBuffer commands = VK_NULL_HANDLE;
     VkDeviceSize commandsOffset = 0;
+    uint32_t commandCount = 0;
 };
 
 } // namespace tessera::backends

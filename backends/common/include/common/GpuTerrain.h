@@ -65,6 +65,13 @@ public:
     /// `region` (min x, min z, max x, max z): the texels whose march towards
     /// the sun crosses it must be redrawn before the next draw.
     void invalidateSunVisibility(const glm::vec4& region);
+    /// Changes whenever the height map does (made, or a crater splatted into
+    /// it), and is never shared by two terrains: a technique that derives
+    /// something from the heights alone (streamout's displaced cage) keeps it
+    /// while this stays the same, instead of redoing it every frame.
+    uint64_t heightRevision() const { return mHeightRevision; }
+    /// A pass changed the height map (TerrainSplatPass).
+    void markHeightsChanged();
     /// One control-mesh quad in patch-local [0,1]^2 (4 vertices, 6 indices),
     /// instanced once per visible patch for the untessellated draw.
     gpu::Buffer& quadVertices() { return mQuadVertices; }
@@ -99,6 +106,7 @@ private:
     glm::vec3 mSunVisibilityFor{0.0f};
     bool mSunVisibilityValid = false;
     std::optional<glm::vec4> mSunDirty;
+    uint64_t mHeightRevision = 0;
     gpu::Buffer mQuadVertices;
     gpu::Buffer mQuadIndices;
     struct Slot {
