@@ -5,6 +5,7 @@
 #include "common/BasicCharacterBackend.h"
 #include "common/CommandHelpers.h"
 #include "common/ComputeCharacterSkinPass.h"
+#include "common/ComputeSubdivRefinePass.h"
 #include "common/ComputeTessFactorPass.h"
 #include "common/CrowdDescriptors.h"
 #include "common/FillWirePipelines.h"
@@ -48,6 +49,7 @@ protected:
                                                          static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
         mCrowdPass = HulldomainCrowdPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
                                          static_cast<VkFormat>(info.depthFormat));
+        mSubdivRefine = ComputeSubdivRefinePass(*mDevice, "hulldomain");
         mSubdivPass = HulldomainSubdivPass(*mDevice, static_cast<VkFormat>(info.colorFormat),
                                            static_cast<VkFormat>(info.depthFormat), mWireframeSupported);
         const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
@@ -81,6 +83,7 @@ protected:
         mCharacterSkin = {};
         mCharacterPatches = {};
         mCrowdPass = {};
+        mSubdivRefine = {};
         mSubdivPass = {};
     }
 
@@ -103,7 +106,7 @@ protected:
 
     VkBufferUsageFlags subdivWriteUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
     void recordSubdivPasses(GpuSubdiv& surface, const gpu::UniformSlice&) override {
-        mSubdivPass.recordRefine(*mFrame, surface);
+        mSubdivRefine.record(*mFrame, surface, HulldomainSubdivPass::kPointReaders);
     }
     void recordSubdivDraw(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) override {
         mSubdivPass.recordDraw(*mFrame, surface, mFrameUniforms, uniforms, mFrameInfo.wireframe);
@@ -156,6 +159,7 @@ protected:
 private:
     ComputeTessFactorPass mFactorPass;
     HulldomainCrowdPass mCrowdPass;
+    ComputeSubdivRefinePass mSubdivRefine;
     HulldomainSubdivPass mSubdivPass;
     ComputeCharacterSkinPass mCharacterSkin;
     HulldomainCharacterPatchPass mCharacterPatches;

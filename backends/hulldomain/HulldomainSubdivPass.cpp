@@ -2,14 +2,12 @@
 
 #include "common/CommandHelpers.h"
 #include "tessera/shaders/FrameUniforms.h"
-#include "tessera/gpu/Barriers.h"
 
 #include <algorithm>
 
 #include "hulldomain_subdiv_patch.tesc.spv.h"
 #include "hulldomain_subdiv_patch.tese.spv.h"
 #include "hulldomain_subdiv_patch.vert.spv.h"
-#include "hulldomain_subdiv_refine.comp.spv.h"
 #include "subdiv.frag.spv.h"
 
 namespace tessera::backends {
@@ -17,20 +15,11 @@ namespace tessera::backends {
 namespace {
 constexpr uint32_t kMaxTessellatedVertices = 65536;
 constexpr uint32_t kVerticesPerDomainAt64 = 65 * 65; // a quad domain at level 64
-constexpr VkPipelineStageFlags2 kDrawReads = VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT |
-                                             VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT |
-                                             VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
 }
 
 HulldomainSubdivPass::HulldomainSubdivPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat,
                                            bool wireframe)
     : mDevice(&device) {
-    const VkShaderStageFlags compute = VK_SHADER_STAGE_COMPUTE_BIT;
-    std::vector<gpu::BindingDesc> refine = GpuSubdiv::refineBindings(compute);
-    refine.push_back({TS_BINDING_SUBDIV_POINTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, compute});
-    mRefineLayout = gpu::PipelineLayout(device, refine, sizeof(uint32_t), compute, "hulldomain.subdivRefine.layout");
-    mRefine = gpu::ComputePipeline(device, mRefineLayout, hulldomain_subdiv_refine_comp_spv, "hulldomain.subdivRefine");
-
     const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
     std::vector<gpu::BindingDesc> bindings = GpuSubdiv::levelBindings(graphics);
     bindings.push_back({TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, graphics});
@@ -54,25 +43,6 @@ HulldomainSubdivPass::HulldomainSubdivPass(gpu::Device& device, VkFormat colorFo
         mPipelines[twoSided] = FillWirePipelines(
             device, desc, std::string("hulldomain.subdiv.") + (twoSided ? "twoSided" : "closed"), wireframe);
     }
-}
-
-void HulldomainSubdivPass::recordRefine(gpu::FrameContext& frame, GpuSubdiv& surface) {
-    VkCommandBuffer cmd = frame.cmd();
-    gpu::PassScope pass(frame, "subdiv.refine");
-    // The previous frame's draw may still read the points (write after read).
-    gpu::memoryBarrier(cmd, kDrawReads, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mRefine.handle());
-    const VkDescriptorBufferInfo points{surface.points().handle(), 0, VK_WHOLE_SIZE};
-    std::vector<VkWriteDescriptorSet> writes = surface.refineWrites(frame.slot());
-    writes.push_back(bufferWrite(TS_BINDING_SUBDIV_POINTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &points));
-    mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mRefineLayout.handle(), 0,
-                                       uint32_t(writes.size()), writes.data());
-    const uint32_t count = surface.refinedPointCount();
-    vkCmdPushConstants(cmd, mRefineLayout.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof count, &count);
-    vkCmdDispatch(cmd, (count + 63) / 64, 1, 1);
-    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, kDrawReads,
-                       VK_ACCESS_2_SHADER_READ_BIT);
 }
 
 void HulldomainSubdivPass::recordDraw(gpu::FrameContext& frame, GpuSubdiv& surface,

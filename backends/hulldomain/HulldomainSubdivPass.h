@@ -1,15 +1,14 @@
 #pragma once
 /// @file HulldomainSubdivPass.h
-/// hulldomain's Catmull-Clark surfaces (the second paper, D3D11 style): a
-/// compute pass refines the control points and corner points from this
-/// frame's cage; then one patch per tessellation domain, whose hull stage
+/// hulldomain's Catmull-Clark surfaces (the second paper, D3D11 style): after
+/// the shared compute refine (ComputeSubdivRefinePass), one patch per
+/// tessellation domain, whose hull stage
 /// sets the levels from its corners' per-vertex levels (or culls it) and
 /// whose domain stage evaluates the shared subdiv_eval.glsl at
 /// gl_TessCoord, levels up to 64.
 
 #include "common/FillWirePipelines.h"
 #include "common/GpuSubdiv.h"
-#include "tessera/gpu/ComputePipeline.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/PipelineLayout.h"
@@ -21,17 +20,16 @@ public:
     HulldomainSubdivPass() = default;
     HulldomainSubdivPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat, bool wireframe);
 
-    /// "subdiv.refine", outside any render pass: leaves the refined points
-    /// ready for the draw's shader reads.
-    void recordRefine(gpu::FrameContext& frame, GpuSubdiv& surface);
+    /// The stages of the draw that read the refined points.
+    static constexpr VkPipelineStageFlags2 kPointReaders = VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT |
+                                                           VK_PIPELINE_STAGE_2_TESSELLATION_EVALUATION_SHADER_BIT |
+                                                           VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
     /// "subdiv.draw", inside the main pass.
     void recordDraw(gpu::FrameContext& frame, GpuSubdiv& surface, const gpu::UniformSlice& frameUniforms,
                     const gpu::UniformSlice& uniforms, bool wireframe);
 
 private:
     gpu::Device* mDevice = nullptr;
-    gpu::PipelineLayout mRefineLayout;
-    gpu::ComputePipeline mRefine;
     gpu::PipelineLayout mLayout;
     FillWirePipelines mPipelines[2]; ///< [two-sided]
 };

@@ -8,11 +8,16 @@
 // as hulldomain's, the second through task and mesh shaders: compute skins
 // the cage once into 128-bit compressed vertices, then a mesh workgroup per
 // piece of each cage triangle's pattern evaluates Listing 8 at its points.
+// Subdivision surfaces: the shared compute refine, then task shaders take
+// each domain's levels (or cull it) and mesh shaders evaluate the surface at
+// the pattern's points.
 #include "common/BackendPlugin.h"
 #include "common/BasicCharacterBackend.h"
 #include "common/ComputeCharacterSkinPass.h"
+#include "common/ComputeSubdivRefinePass.h"
 #include "common/ComputeTessFactorPass.h"
 #include "MeshshaderCharacterPass.h"
+#include "MeshshaderSubdivPass.h"
 #include "MeshshaderTerrainPass.h"
 
 namespace tessera::backends {
@@ -29,6 +34,7 @@ protected:
         caps.usesMeshShaders = true;
         caps.maxTessFactor = 64.0f;
         caps.terrainModes = 0b111;
+        caps.subdiv = true;
         return caps;
     }
 
@@ -43,6 +49,8 @@ protected:
         mTerrainPass = MeshshaderTerrainPass(*mDevice, color, depth, mWireframeSupported);
         mCharacterSkin = ComputeCharacterSkinPass(*mDevice, "meshshader");
         mCharacterPatches = MeshshaderCharacterPass(*mDevice, color, depth, mWireframeSupported);
+        mSubdivRefine = ComputeSubdivRefinePass(*mDevice, "meshshader");
+        mSubdivPass = MeshshaderSubdivPass(*mDevice, color, depth, mWireframeSupported);
         return {};
     }
 
@@ -51,6 +59,16 @@ protected:
         mTerrainPass = {};
         mCharacterSkin = {};
         mCharacterPatches = {};
+        mSubdivRefine = {};
+        mSubdivPass = {};
+    }
+
+    VkBufferUsageFlags subdivWriteUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
+    void recordSubdivPasses(GpuSubdiv& surface, const gpu::UniformSlice&) override {
+        mSubdivRefine.record(*mFrame, surface, MeshshaderSubdivPass::kPointReaders);
+    }
+    void recordSubdivDraw(GpuSubdiv& surface, const gpu::UniformSlice& uniforms) override {
+        mSubdivPass.recordDraw(*mFrame, surface, mFrameUniforms, uniforms, mFrameInfo.wireframe);
     }
 
     VkBufferUsageFlags compressedCageUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
@@ -89,6 +107,8 @@ private:
     MeshshaderTerrainPass mTerrainPass;
     ComputeCharacterSkinPass mCharacterSkin;
     MeshshaderCharacterPass mCharacterPatches;
+    ComputeSubdivRefinePass mSubdivRefine;
+    MeshshaderSubdivPass mSubdivPass;
 };
 
 } // namespace

@@ -1,5 +1,5 @@
-// subdiv_varyings.glsl: what every backend's evaluation stage hands the
-// subdivision fragment shader (subdiv.frag): the displaced point, the
+// subdiv_varyings.glsl: what every backend's evaluation stage (TS_SUBDIV_MESH:
+// meshshader's mesh stage) hands the subdivision fragment shader (subdiv.frag): the displaced point, the
 // shading frame of its own domain and its level, so the fragment shader
 // computes the displaced normal per pixel (the second paper, section 5.3).
 #ifndef SUBDIV_VARYINGS_GLSL
@@ -10,15 +10,34 @@
 #else
 #define TS_SUBDIV_VARYING out
 #endif
-layout(location = 0) TS_SUBDIV_VARYING vec3 ioWorld;
-layout(location = 1) TS_SUBDIV_VARYING vec3 ioDu;
-layout(location = 2) TS_SUBDIV_VARYING vec3 ioDv;
-layout(location = 3) TS_SUBDIV_VARYING vec3 ioNu;
-layout(location = 4) TS_SUBDIV_VARYING vec3 ioNv;
-layout(location = 5) TS_SUBDIV_VARYING vec4 ioUvLevel; // ptex (u, v), level, extraordinary blend
-layout(location = 6) flat TS_SUBDIV_VARYING uint ioDomain;
+// A mesh shader writes every vertex of its workgroup: the outputs are arrays.
+#ifdef TS_SUBDIV_MESH
+#define TS_SUBDIV_ARRAY []
+#else
+#define TS_SUBDIV_ARRAY
+#endif
+layout(location = 0) TS_SUBDIV_VARYING vec3 ioWorld TS_SUBDIV_ARRAY;
+layout(location = 1) TS_SUBDIV_VARYING vec3 ioDu TS_SUBDIV_ARRAY;
+layout(location = 2) TS_SUBDIV_VARYING vec3 ioDv TS_SUBDIV_ARRAY;
+layout(location = 3) TS_SUBDIV_VARYING vec3 ioNu TS_SUBDIV_ARRAY;
+layout(location = 4) TS_SUBDIV_VARYING vec3 ioNv TS_SUBDIV_ARRAY;
+layout(location = 5) TS_SUBDIV_VARYING vec4 ioUvLevel TS_SUBDIV_ARRAY; // ptex (u, v), level, extraordinary blend
+layout(location = 6) flat TS_SUBDIV_VARYING uint ioDomain TS_SUBDIV_ARRAY;
 
-#ifndef TS_SUBDIV_FRAGMENT
+#if defined(TS_SUBDIV_MESH)
+// The mesh stage's version: vertex `vertex` of the workgroup's outputs.
+void tsSubdivWriteMeshVaryings(uint vertex, uint domain, TsSubdivVertex v) {
+    vec4 world = subdiv.model * vec4(v.position, 1.0);
+    ioWorld[vertex] = world.xyz;
+    ioDu[vertex] = v.du;
+    ioDv[vertex] = v.dv;
+    ioNu[vertex] = v.nu;
+    ioNv[vertex] = v.nv;
+    ioUvLevel[vertex] = vec4(v.ptexUv, v.level, v.evBlend);
+    ioDomain[vertex] = domain;
+    gl_MeshVerticesEXT[vertex].gl_Position = frame.viewProjection * world;
+}
+#elif !defined(TS_SUBDIV_FRAGMENT)
 void tsSubdivWriteVaryings(uint domain, TsSubdivVertex v) {
     vec4 world = subdiv.model * vec4(v.position, 1.0);
     ioWorld = world.xyz;

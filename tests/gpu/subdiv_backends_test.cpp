@@ -1,11 +1,13 @@
 // Subdivision surfaces on every GPU backend against the CPU and against each
 // other, under the validation layer:
 //  - the refined points each backend's own recirculation writes (compute on
-//    hulldomain, transform feedback on streamout, render target + copy on
-//    r2vb) equal SubdivGpuMesh::refine, the null backend's CPU twin;
+//    hulldomain and meshshader, transform feedback on streamout, render
+//    target + copy on r2vb) equal SubdivGpuMesh::refine, the null backend's
+//    CPU twin;
 //  - one surface drawn with the same uniforms (levels capped at 14.99, the
-//    emulated tessellator's range, so all three tessellate alike) gives the
-//    same image on streamout and r2vb as on hulldomain.
+//    emulated tessellator's range, so all four tessellate alike) gives the
+//    same image on streamout, r2vb and meshshader as on hulldomain
+//    (meshshader where the device has mesh shaders).
 // Shapes: the cube, a hole, creases and a mesh with non-quad faces, and two
 // of them with displacement tiles (the paper's displaced surface: the
 // evaluation samples and blends the tiles' mip levels from the levels).
@@ -42,7 +44,12 @@ namespace {
 
 constexpr uint32_t kWidth = 320, kHeight = 240;
 const char* const kShapes[] = {"catmark_cube", "catmark_hole_test1", "catmark_cube_creases1", "catmark_nonquads"};
-const char* const kEmulated[] = {"streamout", "r2vb"};
+const char* const kCompared[] = {"streamout", "r2vb", "meshshader"};
+
+/// Whether `device` runs `backend` (meshshader needs mesh shaders).
+bool runs(const gpu::Device& device, const std::string& backend) {
+    return backend != "meshshader" || device.features().meshShader;
+}
 const std::pair<const char*, bool> kImageCases[] = {{"catmark_cube", false},          {"catmark_hole_test1", false},
                                                     {"catmark_cube_creases1", false}, {"catmark_nonquads", false},
                                                     {"catmark_cube", true},           {"catmark_cube_creases1", true}};
@@ -238,7 +245,8 @@ TEST_F(SubdivBackendsGpu, RefinedPointsEqualTheCpuStencilsOnEveryBackend) {
         const Shape shape = loadShape(shapeName);
         ASSERT_GT(shape.mesh.refinedPointCount(), 0u);
         const std::vector<glm::vec4> cpu = shape.mesh.refine(shape.mesh.restPositions);
-        for (const char* backendName : {"hulldomain", "streamout", "r2vb"}) {
+        for (const char* backendName : {"hulldomain", "streamout", "r2vb", "meshshader"}) {
+            if (!runs(*device, backendName)) continue;
             SCOPED_TRACE(backendName);
             const Drawn drawn = drawOn(*device, backendName, shape);
             ASSERT_EQ(drawn.points.size(), cpu.size());
@@ -267,7 +275,8 @@ TEST_F(SubdivBackendsGpu, EmulatedImagesMatchHulldomain) {
         savePng(tag + "_hulldomain_wireframe.png", reference.wireframe);
         const double covered = coveredFraction(reference.pixels);
         EXPECT_GT(covered, 0.1) << "the surface should fill part of the image";
-        for (const char* backendName : kEmulated) {
+        for (const char* backendName : kCompared) {
+            if (!runs(*device, backendName)) continue;
             SCOPED_TRACE(backendName);
             const Drawn drawn = drawOn(*device, backendName, shape);
             ASSERT_EQ(drawn.pixels.size(), reference.pixels.size());

@@ -136,6 +136,14 @@ TEST(SubdivCrackHardware, DisplacedSurfaceHasNoCracksUpTo64) {
     EXPECT_EQ(sweepAll("hulldomain", {"14.99:64", "0.03", 3}), 0);
 }
 
+// meshshader's patterns from task and mesh shaders, over the whole range in
+// one sweep (its patterns are the hardware's, checked bit for bit against the
+// tessellator: tests/unit/tessellator_mesh_pattern_test.cpp).
+TEST(SubdivCrackMesh, DisplacedSurfaceHasNoCracksUpTo64) {
+    if (!deviceRunsBackend("meshshader")) GTEST_SKIP() << "the device cannot run meshshader";
+    EXPECT_EQ(sweepAll("meshshader", {"1:64", "0.03", 6}), 0);
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryBackend, SubdivCrack, ::testing::Values("hulldomain", "streamout", "r2vb"),
                          [](const auto& test) { return test.param; });
 

@@ -42,7 +42,7 @@ BenchPlan subdivPlan() {
     BenchPlan plan;
     plan.name = "subdiv";
     plan.setting = setting::kSubdivBenchmark;
-    plan.comparison = {kComparisonReference, "streamout", "r2vb"};
+    plan.comparison = {kComparisonReference, "streamout", "r2vb", "meshshader"};
     return plan;
 }
 

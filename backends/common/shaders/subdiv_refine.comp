@@ -1,6 +1,7 @@
 #version 450
-// hulldomain's refine pass (compute): every control point and corner point
-// of a subdivision surface from this frame's cage, one invocation each.
+// The refine pass of the backends with compute (hulldomain, meshshader):
+// every control point and corner point of a subdivision surface from this
+// frame's cage, one invocation each.
 #extension GL_GOOGLE_include_directive : require
 #include "subdiv_refine.glsl"
 
