@@ -1,12 +1,12 @@
-// meshshader_patches.glsl: how a task workgroup hands quad patches to mesh
-// workgroups, for the terrain's patches and the subdivision surfaces'
-// domains alike. A task workgroup takes 32 patches; each patch that survives
+// mesh_patches.glsl: how a task workgroup hands quad patches to mesh
+// workgroups, for the meshshader backend's terrain patches and subdivision
+// domains alike, and for the GPU test that captures their patterns. A task workgroup takes 32 patches; each patch that survives
 // culling asks for one mesh workgroup per piece of its pattern
 // (TessMeshPattern.h), and firstPiece (an exclusive prefix sum) says which
 // workgroups are whose. Include after GL_EXT_mesh_shader and
 // TessMeshPattern.h.
-#ifndef MESHSHADER_PATCHES_GLSL
-#define MESHSHADER_PATCHES_GLSL
+#ifndef MESH_PATCHES_GLSL
+#define MESH_PATCHES_GLSL
 
 #define MS_TASK_PATCHES 32u
 
