@@ -15,6 +15,9 @@
 
 namespace tessera::test {
 
+/// The backends of the fixture, in the report's order.
+inline constexpr const char* kFixtureBackends[] = {"hulldomain", "r2vb", "streamout", "meshshader"};
+
 inline nlohmann::json fixtureRecord(const std::string& backend, const std::string& view, const std::string& mode,
                                     const std::string& metric, double mainMs, double cpuMs, const std::string& device) {
     nlohmann::json r;
@@ -29,15 +32,22 @@ inline nlohmann::json fixtureRecord(const std::string& backend, const std::strin
     r["cpu_frame_ms_median"] = cpuMs;
     r["clipping_invocations"] = 21302;
     r["triangles"] = 21302;
-    r["vertex_shader_invocations"] = backend == "hulldomain" ? 959 : 72537;
+    const bool mesh = backend == "meshshader";
+    r["vertex_shader_invocations"] = backend == "hulldomain" ? 959 : mesh ? 0 : 72537;
     r["tess_evaluation_invocations"] = backend == "hulldomain" ? 19786 : 0;
     r["geometry_shader_invocations"] = backend == "streamout" ? 959 : 0;
-    r["intermediate_bytes"] = backend == "hulldomain" ? 25088 : backend == "r2vb" ? 724787 : 341811;
+    r["task_shader_invocations"] = mesh ? 992 : 0;
+    r["mesh_shader_invocations"] = mesh ? 171264 : 0;
+    r["intermediate_bytes"] = backend == "hulldomain" ? 25088
+                              : backend == "r2vb"     ? 724787
+                              : mesh                  ? 294720
+                                                      : 341811;
     r["trace"] = "bench-" + backend + ".json";
     std::vector<std::pair<std::string, double>> passes;
     if (backend == "hulldomain") passes = {{"terrain.factors", 0.019}};
     if (backend == "r2vb") passes = {{"r2vb.cage", 0.029}, {"r2vb.factors", 0.023}, {"r2vb.copyFactors", 0.013}};
     if (backend == "streamout") passes = {{"streamout.cage", 0.018}, {"streamout.cull", 0.012}};
+    if (mesh) passes = {{"terrain.factors", 0.019}};
     passes.push_back({"terrain." + mode, mainMs});
     std::string names;
     double total = 0.0;
@@ -56,9 +66,9 @@ inline nlohmann::json fixtureRecords(const std::string& device = "llvmpipe (LLVM
     nlohmann::json records = nlohmann::json::array();
     for (const char* view : {"far", "close"})
         for (const char* mode : {"lowres", "adaptive"})
-            for (const char* backend : {"hulldomain", "r2vb", "streamout"}) {
+            for (const char* backend : kFixtureBackends) {
                 const std::string b = backend;
-                const double main = b == "r2vb" ? 0.13 : b == "hulldomain" ? 18.0 : 21.0;
+                const double main = b == "r2vb" ? 0.13 : b == "hulldomain" ? 18.0 : b == "meshshader" ? 19.0 : 21.0;
                 records.push_back(
                     fixtureRecord(b, view, mode, std::string(mode) == "adaptive" ? "detail" : "-", main, 30.0, device));
             }
@@ -117,18 +127,19 @@ inline Rgba8Image fixtureImage(uint8_t band) {
     return image;
 }
 
-/// Writes bench.json, the three traces and screenshots into `dir`.
+/// Writes bench.json, the four traces and screenshots into `dir`.
 inline void writeFixture(const std::filesystem::path& dir) {
     std::filesystem::create_directories(dir);
     writeText(dir / "bench.json", fixtureRecords().dump(2));
     double start = 5.0e6;
-    for (const char* backend : {"hulldomain", "r2vb", "streamout"}) {
+    for (const char* backend : kFixtureBackends) {
         writeText(dir / ("bench-" + std::string(backend) + ".json"), fixtureTrace(backend, start).dump());
         start += 4.0e6;
     }
     (void)writePng(dir / "screenshot-hulldomain.png", fixtureImage(90));
     (void)writePng(dir / "screenshot-r2vb.png", fixtureImage(250));
     (void)writePng(dir / "screenshot-streamout.png", fixtureImage(250));
+    (void)writePng(dir / "screenshot-meshshader.png", fixtureImage(90));
 }
 
 } // namespace tessera::test

@@ -71,12 +71,12 @@ TEST(ReportHtml, EveryChartHasItsSeries) {
         }
         EXPECT_NE(chart(html, "triangles-" + v).find("data-series=\"hulldomain\""), std::string::npos);
         const std::string inv = chart(html, "invocations-" + v);
-        for (const char* s : {"vertex shader", "tess. evaluation", "geometry shader"})
+        for (const char* s : {"vertex shader", "tess. evaluation", "geometry shader", "task shader", "mesh shader"})
             EXPECT_NE(inv.find("data-series=\"" + std::string(s) + "\""), std::string::npos) << s;
         EXPECT_FALSE(chart(html, "ratio-time-" + v).empty());
     }
     const std::string memory = chart(html, "memory");
-    for (const char* b : {"hulldomain", "r2vb", "streamout"})
+    for (const char* b : test::kFixtureBackends)
         EXPECT_NE(memory.find("data-series=\"" + std::string(b) + "\""), std::string::npos) << b;
 }
 
@@ -100,8 +100,8 @@ TEST(ReportHtml, FlaggedTimingsAreHatchedNotFacts) {
 
 TEST(ReportHtml, SelfContainedWithImagesAndLinks) {
     const std::string html = writeFixtureReport("html-self");
-    // Screenshots of three backends and diffs of two, embedded.
-    EXPECT_EQ(countOf(html, "src=\"data:image/png;base64,"), 5u);
+    // Screenshots of four backends and diffs of three, embedded.
+    EXPECT_EQ(countOf(html, "src=\"data:image/png;base64,"), 7u);
     EXPECT_NE(html.find("33.33% of pixels differ"), std::string::npos); // the band: 12 of 36 rows
     // Nothing is fetched: no script, no external style or image.
     EXPECT_EQ(html.find("<script"), std::string::npos);
@@ -109,7 +109,8 @@ TEST(ReportHtml, SelfContainedWithImagesAndLinks) {
     EXPECT_EQ(html.find("<link"), std::string::npos);
     // Links to the traces beside it.
     for (const char* link : {"href=\"bench-hulldomain.json\"", "href=\"bench-r2vb.json\"",
-                             "href=\"bench-streamout.json\"", "href=\"report-trace.json\""})
+                             "href=\"bench-streamout.json\"", "href=\"bench-meshshader.json\"",
+                             "href=\"report-trace.json\""})
         EXPECT_NE(html.find(link), std::string::npos) << link;
     EXPECT_NE(html.find("llvmpipe (LLVM 15.0.6, 256 bits)"), std::string::npos);
     EXPECT_NE(html.find("Mesa 22.3.6"), std::string::npos);

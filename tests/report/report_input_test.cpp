@@ -32,7 +32,7 @@ std::string parseError(const std::string& text) {
 TEST(ReportInput, ReadsTheBenchmarkRecords) {
     auto records = report::parseBenchRecords(test::fixtureRecords().dump(), "bench.json");
     ASSERT_TRUE(records) << records.error().message;
-    ASSERT_EQ(records->size(), 12u);
+    ASSERT_EQ(records->size(), 16u);
     const report::BenchRecord& r2vb = records->at(1);
     EXPECT_EQ(r2vb.backend, "r2vb");
     EXPECT_EQ(r2vb.rowLabel(), "far lowres");
@@ -40,7 +40,8 @@ TEST(ReportInput, ReadsTheBenchmarkRecords) {
     EXPECT_EQ(r2vb.passes.back().name, "terrain.lowres");
     EXPECT_DOUBLE_EQ(r2vb.passes.back().gpuMs, 0.13);
     EXPECT_DOUBLE_EQ(r2vb.cpuFrameMs, 30.0);
-    EXPECT_EQ(report::backendsOf(*records), (std::vector<std::string>{"hulldomain", "r2vb", "streamout"}));
+    EXPECT_EQ(report::backendsOf(*records),
+              (std::vector<std::string>{"hulldomain", "r2vb", "streamout", "meshshader"}));
 }
 
 TEST(ReportInput, MalformedJsonNamesTheFileAndWhere) {
@@ -94,7 +95,7 @@ TEST(ReportInput, WriterNotesMissingOptionalInputs) {
     test::writeText(dir / "bench.json", test::fixtureRecords().dump());
     auto written = report::writeReport({dir, dir / "report.html", {}, {}, {}});
     ASSERT_TRUE(written) << written.error().message;
-    EXPECT_EQ(written->notes.size(), 6u); // three traces, three screenshots
+    EXPECT_EQ(written->notes.size(), 8u); // four traces, four screenshots
     EXPECT_TRUE(written->trace.empty());
     EXPECT_TRUE(fs::exists(dir / "report.html"));
 }

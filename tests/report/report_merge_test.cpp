@@ -27,11 +27,11 @@ fs::path fixtureDir(const std::string& name) {
 TEST(ReportMerge, OneProcessTrackPerBackend) {
     const fs::path dir = fixtureDir("merge");
     std::vector<report::TraceSource> sources;
-    for (const char* b : {"hulldomain", "r2vb", "streamout"})
+    for (const char* b : test::kFixtureBackends)
         sources.push_back({b, dir / ("bench-" + std::string(b) + ".json")});
     auto merged = report::mergeTraces(sources);
     ASSERT_TRUE(merged) << merged.error().message;
-    EXPECT_EQ(merged->backends, (std::vector<std::string>{"hulldomain", "r2vb", "streamout"}));
+    EXPECT_EQ(merged->backends, (std::vector<std::string>{"hulldomain", "r2vb", "streamout", "meshshader"}));
     const nlohmann::json root = nlohmann::json::parse(merged->json);
     const nlohmann::json& events = root.at("traceEvents");
     EXPECT_EQ(merged->events, events.size());
@@ -50,11 +50,12 @@ TEST(ReportMerge, OneProcessTrackPerBackend) {
         }
         if (e.at("ph") == "X") ++slices[pid];
     }
-    ASSERT_EQ(processNames.size(), 3u);
+    ASSERT_EQ(processNames.size(), 4u);
     EXPECT_EQ(processNames[1], "hulldomain (llvmpipe (LLVM 15.0.6, 256 bits))");
     EXPECT_EQ(processNames[2].rfind("r2vb", 0), 0u);
     EXPECT_EQ(processNames[3].rfind("streamout", 0), 0u);
-    for (int pid = 1; pid <= 3; ++pid) {
+    EXPECT_EQ(processNames[4].rfind("meshshader", 0), 0u);
+    for (int pid = 1; pid <= 4; ++pid) {
         EXPECT_DOUBLE_EQ(firstTs[pid], 0.0) << "pid " << pid << " starts at 0";
         EXPECT_EQ(slices[pid], 2) << "the frame and the GPU pass of pid " << pid;
     }

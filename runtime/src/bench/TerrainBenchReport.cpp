@@ -64,6 +64,9 @@ std::string terrainBenchJson(const std::vector<TerrainBenchRecord>& records) {
         json.keyValue("vertex_shader_invocations", r.vertexShaderInvocations);
         json.keyValue("tess_evaluation_invocations", r.tessEvaluationInvocations);
         json.keyValue("geometry_shader_invocations", r.geometryShaderInvocations);
+        json.keyValue("task_shader_invocations", r.taskShaderInvocations);
+        json.keyValue("mesh_shader_invocations", r.meshShaderInvocations);
+        json.keyValue("mesh_primitives", r.meshPrimitives);
         json.keyValue("intermediate_bytes", r.intermediateBytes);
         json.keyValue("trace", r.trace);
         // Flat keys keep every record a flat object (the format's promise);

@@ -45,13 +45,20 @@ struct TerrainBenchRecord {
     double tessMax = 0.0; ///< largest adaptive level (0 for the other modes)
 
     /// Triangles of the backend's main terrain pass ("terrain.<mode>"):
-    /// primitives reaching the clipper (clipping invocations) in its median
-    /// frame. The figure that is equal on every backend for the same levels.
+    /// primitives generated for the clipper (clipping invocations, or the mesh
+    /// primitives where a device counts none for mesh pipelines:
+    /// profiler::generatedPrimitivesOf) in its median frame. The figure that
+    /// is equal on every backend for the same levels.
     uint64_t clippingInvocations = 0;
     /// Sums over every pass of the median GPU frame.
     uint64_t vertexShaderInvocations = 0;
     uint64_t tessEvaluationInvocations = 0;
     uint64_t geometryShaderInvocations = 0;
+    /// Task and mesh shader invocations and the primitives the mesh shaders
+    /// emitted (VK_EXT_mesh_shader's counters; 0 on the other backends).
+    uint64_t taskShaderInvocations = 0;
+    uint64_t meshShaderInvocations = 0;
+    uint64_t meshPrimitives = 0;
     /// Bytes of the backend's intermediate buffers and render targets in the
     /// last frame (backend::FrameReport::intermediateBytes).
     uint64_t intermediateBytes = 0;

@@ -136,6 +136,9 @@ TerrainBenchRecord makeRecord(const RenderSession& session, const char* view,
         r.vertexShaderInvocations = stats->vertexShaderInvocations;
         r.tessEvaluationInvocations = stats->tessEvaluationInvocations;
         r.geometryShaderInvocations = stats->geometryShaderInvocations;
+        r.taskShaderInvocations = stats->taskShaderInvocations;
+        r.meshShaderInvocations = stats->meshShaderInvocations;
+        r.meshPrimitives = stats->meshPrimitivesGenerated;
     }
     const std::string terrainPass = std::string("terrain.") + terrain::toString(settings.mode);
     for (const profiler::PassSummary& pass : summary.passes) {

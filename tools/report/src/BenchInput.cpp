@@ -112,6 +112,8 @@ Result<std::vector<BenchRecord>> parseBenchRecords(const std::string& text, cons
         r.vertexShaderInvocations = in.count("vertex_shader_invocations", false);
         r.tessEvaluationInvocations = in.count("tess_evaluation_invocations", false);
         r.geometryShaderInvocations = in.count("geometry_shader_invocations", false);
+        r.taskShaderInvocations = in.count("task_shader_invocations", false);
+        r.meshShaderInvocations = in.count("mesh_shader_invocations", false);
         r.intermediateBytes = in.count("intermediate_bytes", false);
         r.trace = in.text("trace", false);
         const std::string passes = in.text("passes", false);

@@ -145,8 +145,11 @@ std::string invocationsChart(const Context& c, const std::string& view) {
         bar.segments.push_back({"vertex shader", double(r.vertexShaderInvocations), false, {}});
         bar.segments.push_back({"tess. evaluation", double(r.tessEvaluationInvocations), false, {}});
         bar.segments.push_back({"geometry shader", double(r.geometryShaderInvocations), false, {}});
-        bar.note =
-            formatValue(double(r.vertexShaderInvocations + r.tessEvaluationInvocations + r.geometryShaderInvocations));
+        bar.segments.push_back({"task shader", double(r.taskShaderInvocations), false, {}});
+        bar.segments.push_back({"mesh shader", double(r.meshShaderInvocations), false, {}});
+        bar.note = formatValue(double(r.vertexShaderInvocations + r.tessEvaluationInvocations +
+                                      r.geometryShaderInvocations + r.taskShaderInvocations +
+                                      r.meshShaderInvocations));
         return bar;
     });
     return renderSvgChart(chart);

@@ -62,9 +62,11 @@ std::string formatValue(double value) {
 std::string seriesColour(const std::string& series) {
     static const std::map<std::string, std::string> kFixed = {
         {"hulldomain", "#1f6fb4"},       {"r2vb", "#d0542a"},
-        {"streamout", "#2f9e44"},        {"gpu frame", "#5b4bb7"},
+        {"streamout", "#2f9e44"},        {"meshshader", "#ae3ec9"},
+        {"gpu frame", "#5b4bb7"},
         {"wall-clock frame", "#9aa5b1"}, {"vertex shader", "#e8a33d"},
-        {"tess. evaluation", "#1f6fb4"}, {"geometry shader", "#2f9e44"}};
+        {"tess. evaluation", "#1f6fb4"}, {"geometry shader", "#2f9e44"},
+        {"task shader", "#c2255c"},      {"mesh shader", "#ae3ec9"}};
     if (auto it = kFixed.find(series); it != kFixed.end()) return it->second;
     // Passes: the main terrain passes share one colour (they draw the frame),
     // the others take palette colours in order of first use.

@@ -40,6 +40,8 @@ struct BenchRecord {
     uint64_t vertexShaderInvocations = 0;
     uint64_t tessEvaluationInvocations = 0;
     uint64_t geometryShaderInvocations = 0;
+    uint64_t taskShaderInvocations = 0; ///< task and mesh: the meshshader backend's
+    uint64_t meshShaderInvocations = 0;
     uint64_t intermediateBytes = 0;
     std::vector<PassTime> passes; ///< in the order of the record's "passes"
     std::string trace;            ///< the trace file the run named ("" if none)
