@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 
 namespace tessera::runtime {
 namespace {
@@ -68,8 +69,8 @@ void WindowController::handleKeys(OverlayActions& actions) {
     if (mOverlay->wantsKeyboard()) return;
     if (in.pressed(GLFW_KEY_TAB)) mState.freeCamera = !mState.freeCamera;
     if (in.pressed(GLFW_KEY_M)) actions.dropMeteor = true;
-    const int backendKeys[] = {GLFW_KEY_1, GLFW_KEY_2, GLFW_KEY_3};
-    for (size_t i = 0; i < mState.backends.size() && i < 3; ++i)
+    const int backendKeys[] = {GLFW_KEY_1, GLFW_KEY_2, GLFW_KEY_3, GLFW_KEY_4};
+    for (size_t i = 0; i < mState.backends.size() && i < std::size(backendKeys); ++i)
         if (in.pressed(backendKeys[i]) && mState.backends[i] != mRun.session().capabilities().name)
             actions.switchBackend = mState.backends[i];
 }

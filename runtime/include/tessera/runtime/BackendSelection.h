@@ -12,8 +12,11 @@
 namespace tessera::runtime {
 
 /// Backends in order of preference when Options::backend is empty; the
-/// first the device can run is used (bgfx's scored fallback).
-inline constexpr const char* kBackendPreference[] = {"hulldomain", "streamout", "r2vb"};
+/// first the device can run is used (bgfx's scored fallback). meshshader
+/// comes last: on the default device (lavapipe) it is the slowest of the
+/// four at equal triangles (docs/BACKENDS.md, "meshshader"), so it runs when
+/// named, or on a device that runs none of the others.
+inline constexpr const char* kBackendPreference[] = {"hulldomain", "streamout", "r2vb", "meshshader"};
 
 /// Prints every backend with its capabilities, checked against the device.
 Status listBackends(const Options& options);
