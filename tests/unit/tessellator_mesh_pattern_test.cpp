@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <iostream>
 #include <vector>
 
 using namespace tessera;
@@ -103,6 +104,44 @@ TEST(TessellatorMeshPattern, RandomLevelsMatchTheTessellator) {
         expectSame(f);
         if (HasFailure()) return;
     }
+}
+
+// The mesh stage draws consecutive pieces together (tsMeshPiecesPerGroup):
+// every group must fit one workgroup, and low levels must take few groups.
+TEST(TessellatorMeshPattern, PieceGroupsFitOneWorkgroup) {
+    const MeshPatternLibrary& library = MeshPatternLibrary::quadFractionalOdd();
+    Random rng(31u);
+    uint32_t groups = 0, pieces = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const float top = i < 1000 ? 16.0f : TS_MESH_MAX_LEVEL;
+        const shader::TsMeshPatch p =
+            shader::tsMeshPatch(glm::vec4(rng.range(1.0f, top), rng.range(1.0f, top), rng.range(1.0f, top),
+                                          rng.range(1.0f, top)),
+                                glm::vec2(rng.range(1.0f, top), rng.range(1.0f, top)));
+        const uint32_t perGroup = shader::tsMeshPiecesPerGroup(p);
+        ASSERT_GE(perGroup, 1u);
+        for (uint32_t first = 0; first < p.pieceCount; first += perGroup) {
+            uint32_t points = 0, triangles = 0;
+            for (uint32_t piece = first; piece < std::min(first + perGroup, p.pieceCount); ++piece) {
+                const glm::uvec4 entry = library.keys()[shader::tsMeshPieceKey(p, piece)].entry;
+                points += entry.z + entry.w;
+                triangles += entry.y;
+            }
+            EXPECT_LE(points, TS_MESH_MAX_VERTICES);
+            EXPECT_LE(triangles, TS_MESH_MAX_TRIANGLES);
+        }
+        groups += shader::tsMeshGroupCount(p);
+        pieces += p.pieceCount;
+    }
+    std::cout << "[mesh pattern] 2,000 patches: " << pieces << " pieces in " << groups << " mesh workgroups\n";
+    // Level 8 everywhere (10 points an edge): 17 pieces in 3 workgroups;
+    // level 4 (6 points): 9 pieces in one.
+    const shader::TsMeshPatch eight = shader::tsMeshPatch(glm::vec4(8.0f), glm::vec2(8.0f));
+    EXPECT_EQ(eight.pieceCount, 17u);
+    EXPECT_EQ(shader::tsMeshGroupCount(eight), 3u);
+    const shader::TsMeshPatch four = shader::tsMeshPatch(glm::vec4(4.0f), glm::vec2(4.0f));
+    EXPECT_EQ(four.pieceCount, 9u);
+    EXPECT_EQ(shader::tsMeshGroupCount(four), 1u);
 }
 
 TEST(TessellatorMeshPattern, MinimalAndFramedPatches) {

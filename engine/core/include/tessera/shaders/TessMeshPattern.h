@@ -107,6 +107,27 @@ TS_INLINE uint tsMeshPieceKey(TsMeshPatch p, uint piece) {
     return TS_MESH_KEY_CENTRE + (wideU ? 0u : TS_MESH_CENTRE_KEYS) + length / 2u - 1u;
 }
 
+/// How many consecutive pieces of patch `p` one mesh workgroup draws: as
+/// many as surely fit its TS_MESH_MAX_VERTICES and TS_MESH_MAX_TRIANGLES,
+/// from bounds on any piece of the patch (a strip: the outer edge's points
+/// and the first ring's row; a ring side: two rows of at most n - 2 and
+/// n - 4 points; the centre: two rows of at most n), so that low levels,
+/// where pieces hold a few triangles, do not spend a workgroup on each.
+TS_INLINE uint tsMeshPiecesPerGroup(TsMeshPatch p) {
+    uint outer = 2u;
+    for (uint e = 0u; e < 4u; ++e) outer = max(outer, tsOddPointCount(tsOddSpacing(tsEmuPick4(p.outerFxp, e))));
+    uint inner = max(p.points.x, p.points.y);
+    uint points = max(outer + inner - 2u, 2u * inner);
+    uint triangles = max(outer + inner - 4u, 2u * inner - 2u);
+    return max(1u, min(TS_MESH_MAX_VERTICES / points, TS_MESH_MAX_TRIANGLES / triangles));
+}
+
+/// Mesh workgroups patch `p` needs.
+TS_INLINE uint tsMeshGroupCount(TsMeshPatch p) {
+    uint perGroup = tsMeshPiecesPerGroup(p);
+    return (p.pieceCount + perGroup - 1u) / perGroup;
+}
+
 /// Grid indices of point j of ring r's row on edge e: each row runs from its
 /// edge's first corner to the next edge's (u = 0 falling in v, v = 0 rising
 /// in u, u = 1 rising in v, v = 1 falling in u), as QuadPattern walks them.
