@@ -9,7 +9,9 @@
 // Task stage: define MS_TASK_STAGE, include TessMeshPattern.h first.
 // Mesh stage: include mesh_tess.glsl first and define
 // `void msWritePoint(uint vertex, uint patchIndex, vec2 uv)`, which writes
-// output vertex `vertex` for domain point `uv` of patch `patchIndex`.
+// output vertex `vertex` for domain point `uv` of patch `patchIndex`. The
+// GPU capture test defines MS_CAPTURE and the two functions declared under
+// it, to see every triangle this code emits.
 #ifndef MESH_PATCHES_GLSL
 #define MESH_PATCHES_GLSL
 
@@ -56,6 +58,10 @@ void msEmitPatchPieces(bool visible, uint patchIndex, vec4 outer, vec2 inner) {
 }
 #else
 void msWritePoint(uint vertex, uint patchIndex, vec2 uv);
+#ifdef MS_CAPTURE
+void msCaptureTriangle(uvec3 local, uint patchIndex);
+void msCaptureDone(uint patchIndex);
+#endif
 
 // Draws this mesh workgroup's share: finds its patch (the last slot with
 // firstGroup <= the workgroup; patches the task culled own none) and its
@@ -85,11 +91,22 @@ void msDrawPieceGroup() {
         uint piecePoints = entry.z + entry.w;
         for (uint v = gl_LocalInvocationID.x; v < piecePoints; v += gl_WorkGroupSize.x)
             msWritePoint(vertexBase + v, patchIndex, tsMeshLocalPoint(p, piece, entry, v));
-        for (uint t = gl_LocalInvocationID.x; t < entry.y; t += gl_WorkGroupSize.x)
-            gl_PrimitiveTriangleIndicesEXT[triangleBase + t] = tsMeshLocalTriangle(entry, t) + uvec3(vertexBase);
+#ifdef MS_CAPTURE
+        barrier(); // the capture reads points other invocations placed
+#endif
+        for (uint t = gl_LocalInvocationID.x; t < entry.y; t += gl_WorkGroupSize.x) {
+            uvec3 local = tsMeshLocalTriangle(entry, t) + uvec3(vertexBase);
+            gl_PrimitiveTriangleIndicesEXT[triangleBase + t] = local;
+#ifdef MS_CAPTURE
+            msCaptureTriangle(local, patchIndex);
+#endif
+        }
         vertexBase += piecePoints;
         triangleBase += entry.y;
     }
+#ifdef MS_CAPTURE
+    msCaptureDone(patchIndex);
+#endif
 }
 #endif
 

@@ -329,7 +329,7 @@ TEST(MeshPatternCapture, QuadPatternsMatchTheTessellator) {
         const glm::vec4 outer(f.outer[0], f.outer[1], f.outer[2], f.outer[3]);
         const glm::vec2 inner(f.inner[0], f.inner[1]);
         draw.patches.push_back({outer, glm::vec4(inner, 0.0f, 0.0f)});
-        pieces.push_back(shader::tsMeshPatch(outer, inner).pieceCount);
+        pieces.push_back(shader::tsMeshGroupCount(shader::tsMeshPatch(outer, inner)));
     }
     const CaptureRun run = runCapture(*device, draw);
     std::printf("[          ] %zu class-boundary patches, %zu random\n", boundaries, levels.size() - boundaries);

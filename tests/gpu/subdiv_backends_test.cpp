@@ -290,7 +290,12 @@ TEST_F(SubdivBackendsGpu, EmulatedImagesMatchHulldomain) {
                       << " % covered, " << differing * 100.0 << " % of pixels (wireframe " << differingLines * 100.0
                       << " %) beyond 8/255 of hulldomain's\n";
             EXPECT_LT(differing, 0.005);
-            EXPECT_LT(differingLines, 0.005);
+            // meshshader emits a workgroup's pieces in its own order: where
+            // two triangles' edges share a line pixel, the other triangle's
+            // interpolated shading may land on it (0.17% to 0.60% of the
+            // pixels on lavapipe, none off the lines: the solid images are
+            // equal, and MeshPatternCapture checks the triangles bit for bit).
+            EXPECT_LT(differingLines, std::string(backendName) == "meshshader" ? 0.01 : 0.005);
         }
     }
     EXPECT_EQ(GpuTestDevice::validationMessages(), messagesBefore) << "validation messages";

@@ -1,7 +1,7 @@
 // mesh_capture.glsl: what the capture mesh shaders (mesh_capture_quad.mesh,
 // mesh_capture_triangle.mesh) add to the backend's mesh stage: each point
-// the piece places is kept in shared memory beside its gl_Position, and each
-// triangle it emits is folded into its patch's digest
+// the workgroup places is kept in shared memory beside its gl_Position, and
+// each triangle it emits is folded into its patch's digest
 // (MeshCaptureTestLayout.h), which the test compares with Tessellator's.
 // Include after GL_EXT_mesh_shader, the output layout and TessMeshPattern.h.
 #ifndef MESH_CAPTURE_GLSL
@@ -42,11 +42,9 @@ bool captureBefore(vec2 a, vec2 b) {
     return a.x < b.x || (a.x == b.x && a.y < b.y);
 }
 
-// Triangle `t` of the piece, emitted as the backend emits it and hashed in
-// canonical order: rotated so the first smallest corner comes first, as
-// std::min_element and std::rotate do.
-uvec2 captureTriangle(uint t, uvec3 local) {
-    gl_PrimitiveTriangleIndicesEXT[t] = local;
+// The canonical hashes of a triangle of local points: rotated so the first
+// smallest corner comes first, as std::min_element and std::rotate do.
+uvec2 captureHash(uvec3 local) {
     vec2 c0 = capturePoints[local.x], c1 = capturePoints[local.y], c2 = capturePoints[local.z];
     vec2 smallest = c0;
     uint first = 0u;
@@ -60,22 +58,24 @@ uvec2 captureTriangle(uint t, uvec3 local) {
     return tsCaptureHashes(c0, c1, c2);
 }
 
-// Called by every invocation once the points are placed: emits the piece's
-// `entry.y` triangles (tsMeshLocalTriangle) and adds them to patch
-// `patchIndex`'s digest, one set of buffer atomics per workgroup.
-void captureTriangles(uvec4 entry, uint patchIndex) {
-    barrier(); // every point in capturePoints, the totals zeroed
-    uint count = 0u, sum = 0u, xored = 0u;
-    for (uint t = gl_LocalInvocationID.x; t < entry.y; t += gl_WorkGroupSize.x) {
-        uvec2 h = captureTriangle(t, tsMeshLocalTriangle(entry, t));
-        ++count;
-        sum += h.x;
-        xored ^= h.y;
-    }
-    if (count > 0u) {
-        atomicAdd(captureCount, count);
-        atomicAdd(captureSum, sum);
-        atomicXor(captureXor, xored);
+// This invocation's share of the workgroup's digest.
+uint captureOwnCount = 0u, captureOwnSum = 0u, captureOwnXor = 0u;
+
+void captureAdd(uvec3 local) {
+    uvec2 h = captureHash(local);
+    ++captureOwnCount;
+    captureOwnSum += h.x;
+    captureOwnXor ^= h.y;
+}
+
+// Called by every invocation once all triangles are added: folds the
+// workgroup's digest into patch `patchIndex`'s, one set of buffer atomics
+// per workgroup.
+void captureFlush(uint patchIndex) {
+    if (captureOwnCount > 0u) {
+        atomicAdd(captureCount, captureOwnCount);
+        atomicAdd(captureSum, captureOwnSum);
+        atomicXor(captureXor, captureOwnXor);
     }
     barrier();
     if (gl_LocalInvocationIndex == 0u) {
@@ -85,5 +85,28 @@ void captureTriangles(uvec4 entry, uint patchIndex) {
         atomicAdd(captureResults[patchIndex].workgroups, 1u);
     }
 }
+
+// The triangle path (one piece per workgroup): emits the piece's `entry.y`
+// triangles (tsMeshLocalTriangle) as the backend does and adds them.
+void captureTriangles(uvec4 entry, uint patchIndex) {
+    barrier(); // every point in capturePoints, the totals zeroed
+    for (uint t = gl_LocalInvocationID.x; t < entry.y; t += gl_WorkGroupSize.x) {
+        uvec3 local = tsMeshLocalTriangle(entry, t);
+        gl_PrimitiveTriangleIndicesEXT[t] = local;
+        captureAdd(local);
+    }
+    captureFlush(patchIndex);
+}
+
+// The quad path: mesh_patches.glsl's hooks (MS_CAPTURE).
+#ifdef MS_CAPTURE
+void msCaptureTriangle(uvec3 local, uint patchIndex) {
+    captureAdd(local);
+}
+
+void msCaptureDone(uint patchIndex) {
+    captureFlush(patchIndex);
+}
+#endif
 
 #endif
