@@ -69,6 +69,8 @@ TEST(TessellatorMeshPattern, EveryPieceFitsOneMeshWorkgroup) {
         EXPECT_LE(key.entry.z + key.entry.w, TS_MESH_MAX_VERTICES);
         EXPECT_LE(key.entry.x + key.entry.y, library.triangles().size());
     }
+    std::cout << "[mesh pattern] " << library.keys().size() << " keys, " << library.triangles().size()
+              << " triangles\n";
     const shader::TsMeshPatch densest = shader::tsMeshPatch(glm::vec4(64.0f), glm::vec2(64.0f));
     EXPECT_EQ(densest.pieceCount, TS_MESH_MAX_PIECES);
 }
