@@ -17,10 +17,12 @@
 ///    (a point per survivor), the slots pass's (a point per near entry) and
 ///    the skin pass's (nearStride points, instanced by the near entries).
 ///    They take the place of draw-auto (vkCmdDrawIndirectByteCountEXT): on
-///    lavapipe (Mesa 22.3) a draw-auto recorded after an indirect draw in the
-///    same command buffer (here the terrain's pattern draws) draws the wrong
-///    number of vertices, while a query's count copied into a command is
-///    right everywhere;
+///    lavapipe 22.3 a draw-auto recorded after an indirect draw in the same
+///    command buffer (here the terrain's pattern draws) draws the indirect
+///    command's count instead (22.3.6: 7 vertices of 1,000 captured, in
+///    tests/gpu/draw_auto_after_indirect_test.cpp); 25.0.7 draws 1,000. A
+///    query's count copied into a command is right on both, and Debian 12
+///    without backports still ships 22.3, so the copies stay;
 ///  - every creature's cage as an RGBA32UI texel buffer (5 texels per
 ///    CharacterVertex): crowd.vertices() is a vertex stream only, and the
 ///    skin pass pads each slot to nearStride vertices, past a cage's end.
