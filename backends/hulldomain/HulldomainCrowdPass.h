@@ -1,16 +1,16 @@
 #pragma once
 /// @file HulldomainCrowdPass.h
-/// hulldomain's instanced crowd (D3D11 style, compute): a compute pass culls
-/// the instances and bins them into the tier lists, whose counts are the
-/// indirect draws' instance counts; a second compute pass, dispatched
-/// indirectly, skins the near tier's cages into compressed vertices; then
-/// per creature an indirect tessellated draw (near), an indirect draw of the
-/// cage (middle) and of the far mesh (far), skinned from the baked clips.
+/// hulldomain's instanced crowd (D3D11 style, compute): the shared compute
+/// passes (ComputeCrowdCullPass) cull the instances and bin them into the
+/// tier lists, whose counts are the indirect draws' instance counts, and
+/// skin the near tier's cages into compressed vertices; then per creature
+/// an indirect tessellated draw (near), an indirect draw of the cage
+/// (middle) and of the far mesh (far), skinned from the baked clips.
 
+#include "common/ComputeCrowdCullPass.h"
 #include "common/CrowdDescriptors.h"
 #include "common/CrowdMeshPass.h"
 #include "common/GpuCrowd.h"
-#include "tessera/gpu/ComputePipeline.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/PipelineLayout.h"
@@ -31,13 +31,9 @@ public:
     void recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors);
 
 private:
-    void push(VkCommandBuffer cmd, VkPipelineBindPoint point, std::span<const VkWriteDescriptorSet> writes);
-
     gpu::Device* mDevice = nullptr;
-    gpu::PipelineLayout mComputeLayout;
+    ComputeCrowdCullPass mCull;
     gpu::PipelineLayout mLayout;
-    gpu::ComputePipeline mCull;
-    gpu::ComputePipeline mSkin;
     gpu::Pipeline mNear;
     CrowdMeshPass mMesh;
 };

@@ -11,12 +11,20 @@
 // Subdivision surfaces: the shared compute refine, then task shaders take
 // each domain's levels (or cull it) and mesh shaders evaluate the surface at
 // the pattern's points.
+// Instanced crowds (MeshshaderCrowdPass): compute culls and bins into tier
+// lists and skins the near slots (shared with hulldomain); the near tier
+// goes through the character task and mesh shaders, an indirect mesh-task
+// draw per creature; the middle and far tiers are meshlets (meshoptimizer)
+// culled per instance in the task stage.
 #include "common/BackendPlugin.h"
 #include "common/BasicCharacterBackend.h"
 #include "common/ComputeCharacterSkinPass.h"
 #include "common/ComputeSubdivRefinePass.h"
 #include "common/ComputeTessFactorPass.h"
+#include "common/CrowdDescriptors.h"
 #include "MeshshaderCharacterPass.h"
+#include "MeshshaderCrowdPass.h"
+#include "MeshshaderCrowdResources.h"
 #include "MeshshaderSubdivPass.h"
 #include "MeshshaderTerrainPass.h"
 
@@ -35,6 +43,7 @@ protected:
         caps.maxTessFactor = 64.0f;
         caps.terrainModes = 0b111;
         caps.subdiv = true;
+        caps.crowd = true;
         return caps;
     }
 
@@ -51,6 +60,7 @@ protected:
         mCharacterPatches = MeshshaderCharacterPass(*mDevice, color, depth, mWireframeSupported);
         mSubdivRefine = ComputeSubdivRefinePass(*mDevice, "meshshader");
         mSubdivPass = MeshshaderSubdivPass(*mDevice, color, depth, mWireframeSupported);
+        mCrowdPass = MeshshaderCrowdPass(*mDevice, color, depth);
         return {};
     }
 
@@ -61,6 +71,7 @@ protected:
         mCharacterPatches = {};
         mSubdivRefine = {};
         mSubdivPass = {};
+        mCrowdPass = {};
     }
 
     VkBufferUsageFlags subdivWriteUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
@@ -78,6 +89,31 @@ protected:
     void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) override {
         mCharacterPatches.record(*mFrame, instance, path, mFrameInfo.wireframe, characterPush());
     }
+
+    // Instanced crowds: the lists, commands and near slots are storage
+    // buffers written by compute (ComputeCrowdCullPass); the meshlets and the
+    // task-shader commands are each crowd's own (MeshshaderCrowdResources).
+    VkBufferUsageFlags crowdWriteUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
+    Status attachCrowdResources(GpuCrowd& crowd, backend::CrowdHandle handle,
+                                const backend::CrowdDesc& desc) override {
+        auto resources = MeshshaderCrowdResources::create(*mDevice, crowd, desc, handle.id);
+        if (!resources) return resources.error();
+        crowd.attach(std::move(resources.value()));
+        return {};
+    }
+    void recordCrowdPasses(GpuCrowd& crowd, const CrowdFrame& frame) override {
+        CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
+                                     frame.uniforms);
+        mCrowdPass.recordCompute(*mFrame, crowd, crowd.extensionAs<MeshshaderCrowdResources>(), descriptors,
+                                 frame.instanceCount);
+    }
+    void recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame& frame) override {
+        CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
+                                     frame.uniforms);
+        mCrowdPass.recordDraws(*mFrame, crowd, crowd.extensionAs<MeshshaderCrowdResources>(), descriptors);
+    }
+    // crowd.cull, crowd.skin and a draw pass per tier.
+    uint32_t crowdPassCount() const override { return 2 + TS_LOD_TIERS; }
 
     void drawTessellated(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw) override {
         const terrain::TessellationSettings& settings = draw.tessellation;
@@ -109,6 +145,7 @@ private:
     MeshshaderCharacterPass mCharacterPatches;
     ComputeSubdivRefinePass mSubdivRefine;
     MeshshaderSubdivPass mSubdivPass;
+    MeshshaderCrowdPass mCrowdPass;
 };
 
 } // namespace

@@ -165,7 +165,7 @@ protected:
 
     /// Fails, naming the limit, when the crowd's render targets would not
     /// fit this device (R2vbCrowdTargets).
-    Status attachCrowdResources(GpuCrowd& crowd, backend::CrowdHandle handle) override {
+    Status attachCrowdResources(GpuCrowd& crowd, backend::CrowdHandle handle, const backend::CrowdDesc&) override {
         auto targets = R2vbCrowdTargets::create(*mDevice, crowd, handle.id);
         if (!targets) return targets.error();
         crowd.attach(std::move(targets.value()));

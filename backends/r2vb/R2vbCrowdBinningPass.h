@@ -2,7 +2,7 @@
 /// @file R2vbCrowdBinningPass.h
 /// r2vb's crowd culling and LOD binning (D3D9 + R2VB style: render targets,
 /// texel fetch, image-to-buffer copies and indirect draws only), the passes
-/// that do what hulldomain_crowd_cull.comp does with atomics:
+/// that do what crowd_cull.comp does with atomics:
 ///   crowd.state     instances as points at their ids' texels: the LOD rule
 ///                   against last frame's state target, into this frame's;
 ///   crowd.classify  instances as points at their Morton-order texels of the

@@ -1,7 +1,7 @@
 #pragma once
 /// @file R2vbCrowdNearPass.h
 /// r2vb's passes for the emulated near tier of an instanced crowd (what
-/// hulldomain_crowd_cull.comp's slot counter and hulldomain_crowd_skin.comp
+/// crowd_cull.comp's slot counter and crowd_skin.comp
 /// do), after R2vbCrowdBinningPass, with render targets and copies only:
 ///   crowd.nearSlots     one point per slot s, the near tier's element s (a
 ///                       traversal of the pyramid's near channel): its

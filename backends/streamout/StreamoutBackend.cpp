@@ -145,7 +145,7 @@ protected:
     // each crowd's own (StreamoutCrowdResources).
     VkBufferUsageFlags crowdWriteUsage() const override { return VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT; }
 
-    Status attachCrowdResources(GpuCrowd& crowd, backend::CrowdHandle) override {
+    Status attachCrowdResources(GpuCrowd& crowd, backend::CrowdHandle, const backend::CrowdDesc&) override {
         auto resources = mCrowdPasses->createResources(crowd);
         if (!resources) return resources.error();
         crowd.attach(std::move(resources.value()));

@@ -50,6 +50,7 @@ class DeferredTerrainShading : public ::testing::TestWithParam<std::string> {};
 
 // The golden view: terrain, sun shadows, detail textures, fog and sky.
 TEST_P(DeferredTerrainShading, MatchesForwardShading) {
+    if (!deviceRunsBackend(GetParam())) GTEST_SKIP() << "the device cannot run " << GetParam();
     expectDeferredMatchesForward("terrain_" + GetParam(),
                                  {"--scene", "terrain", "--width", "320", "--height", "180", "--frames", "3",
                                   "--camera", "1800,900,6800,-30,-16", "--backend", GetParam()});
@@ -58,12 +59,14 @@ TEST_P(DeferredTerrainShading, MatchesForwardShading) {
 // Creatures shaded forward over the deferred terrain keep their pixels, and
 // their shadows fall on the resolved ground.
 TEST_P(DeferredTerrainShading, KeepsTheCrowdShadedForward) {
+    if (!deviceRunsBackend(GetParam())) GTEST_SKIP() << "the device cannot run " << GetParam();
     expectDeferredMatchesForward("crowd_" + GetParam(),
                                  {"--scene", "crowd", "--heightmap", smallCrowdTerrain(), "--agents", "300",
                                   "--frames", "3", "--width", "320", "--height", "180", "--backend", GetParam()});
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryBackend, DeferredTerrainShading, ::testing::Values("r2vb", "streamout", "hulldomain"),
+INSTANTIATE_TEST_SUITE_P(EveryBackend, DeferredTerrainShading,
+                         ::testing::Values("r2vb", "streamout", "hulldomain", "meshshader"),
                          [](const auto& test) { return test.param; });
 
 // The wireframe stays forward (a line's fragments are not on their pixel

@@ -186,6 +186,15 @@ void exhaust(const std::string& backend, const std::string& scene, Sample sample
     std::printf("[oom] failed at: %s\n", names.c_str());
 }
 
+/// Whether the device runs `backend` (meshshader needs mesh shaders).
+bool deviceRuns(const std::string& backend) {
+    return bool(SceneRun::create(test::smallSceneOptions(backend, "terrain"), 1));
+}
+
+TEST(DeviceMemoryExhaustion, MeshshaderCrowdScene) {
+    if (!deviceRuns("meshshader")) GTEST_SKIP() << "the device cannot run meshshader";
+    exhaust("meshshader", "crowd", Sample::Spread);
+}
 TEST(DeviceMemoryExhaustion, HulldomainCrowdScene) { exhaust("hulldomain", "crowd", Sample::Spread); }
 TEST(DeviceMemoryExhaustion, R2vbCrowdScene) { exhaust("r2vb", "crowd", Sample::Spread); }
 TEST(DeviceMemoryExhaustion, StreamoutCrowdScene) { exhaust("streamout", "crowd", Sample::Spread); }

@@ -123,9 +123,10 @@ Result<backend::CrowdHandle> BasicCharacterBackend::createCrowd(const backend::C
     auto created = GpuCrowd::create(
         *mDevice, desc, [this](backend::CharacterHandle h) { return mCharacters.find(h); }, crowdWriteUsage());
     if (!created) return created.error();
-    return mCrowds.add(*mDevice, std::move(created.value()), [this](GpuCrowd& crowd, backend::CrowdHandle handle) {
-        return attachCrowdResources(crowd, handle);
-    });
+    return mCrowds.add(*mDevice, std::move(created.value()),
+                       [this, &desc](GpuCrowd& crowd, backend::CrowdHandle handle) {
+                           return attachCrowdResources(crowd, handle, desc);
+                       });
 }
 
 void BasicCharacterBackend::destroyCrowd(backend::CrowdHandle handle) {

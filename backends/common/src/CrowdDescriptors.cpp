@@ -39,13 +39,15 @@ std::span<const uint32_t> texelsOf(CrowdDescriptors::Mode mode) {
 } // namespace
 
 gpu::PipelineLayout CrowdDescriptors::layout(gpu::Device& device, Mode mode, VkShaderStageFlags stages,
-                                             std::string name) {
+                                             std::string name, std::initializer_list<gpu::BindingDesc> extra,
+                                             uint32_t pushConstantBytes, VkShaderStageFlags pushConstantStages) {
     std::vector<gpu::BindingDesc> bindings;
     for (const auto& [binding, type] : buffersOf(mode)) bindings.push_back({binding, type, stages});
     for (uint32_t binding : texelsOf(mode)) bindings.push_back({binding, kTexel, stages});
     for (uint32_t binding : kImageBindings)
         bindings.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages});
-    return gpu::PipelineLayout(device, bindings, 0, 0, std::move(name));
+    bindings.insert(bindings.end(), extra.begin(), extra.end());
+    return gpu::PipelineLayout(device, bindings, pushConstantBytes, pushConstantStages, std::move(name));
 }
 
 CrowdDescriptors::CrowdDescriptors(Mode mode, GpuCrowd& crowd, uint32_t slot, const gpu::UniformSlice& frame,

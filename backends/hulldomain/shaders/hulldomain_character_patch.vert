@@ -9,7 +9,7 @@
 
 #if defined(TS_CROWD)
 // An instanced crowd's near tier: the instance's list entry gives its
-// compressed cage's slot (hulldomain_crowd_skin.comp wrote it) and its
+// compressed cage's slot (crowd_skin.comp wrote it) and its
 // placement.
 layout(std430, set = 0, binding = TS_BINDING_CROWD_NEAR) readonly buffer NearBlock {
     uvec4 nearCages[];

@@ -1,6 +1,9 @@
 // meshshader_character.glsl: what a character's task workgroup hands its
 // mesh workgroups: its first cage triangle and the pieces per triangle, so
-// workgroup g draws piece g % pieces of triangle firstTriangle + g / pieces.
+// workgroup g draws piece g % pieces of triangle firstTriangle + g / pieces;
+// in a crowd's near tier (TS_CROWD) also the instance's list entry, its
+// level (selected once, by the task workgroup) and its creature's first
+// cage index in the crowd's index buffer.
 #ifndef MESHSHADER_CHARACTER_GLSL
 #define MESHSHADER_CHARACTER_GLSL
 
@@ -9,6 +12,11 @@
 struct CharacterTaskPayload {
     uint firstTriangle;
     uint pieces;
+#ifdef TS_CROWD
+    uint entry;      // index into crowdLists
+    float level;     // the instance's near level (tsCrowdSelect)
+    uint firstIndex; // the creature's first cage index
+#endif
 };
 
 #endif

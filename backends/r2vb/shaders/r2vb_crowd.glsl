@@ -74,7 +74,7 @@ uint r2vbCrowdState(uint id) {
 
 // Instance i's entry in tier `tier`'s list, which holds it (its own tier's
 // copy, or the fading copy in its previous tier), as
-// hulldomain_crowd_cull.comp makes it.
+// crowd_cull.comp makes it.
 CrowdListEntry r2vbCrowdEntry(uint i, uint tier, uint slot) {
     uint next = r2vbCrowdState(tsCrowdInstance(i).ids.x);
     float coverage = tsLodCoverage(next, uCrowd.lod);

@@ -33,7 +33,7 @@ BenchPlan characterPlan() {
     BenchPlan plan;
     plan.name = "characters";
     plan.setting = setting::kCharacterBenchmark;
-    plan.comparison = {kComparisonReference, "r2vb", "streamout"};
+    plan.comparison = {kComparisonReference, "r2vb", "streamout", "meshshader"};
     return plan;
 }
 

@@ -25,7 +25,7 @@ BenchPlan crowdPlan() {
     BenchPlan plan;
     plan.name = "crowd";
     plan.setting = setting::kCrowdBenchmark;
-    plan.comparison = {"hulldomain", "r2vb", "streamout"};
+    plan.comparison = {"hulldomain", "r2vb", "streamout", "meshshader"};
     plan.everyPreferred = false;
     plan.warmup = 10;
     plan.frames = 30;

@@ -105,9 +105,13 @@ protected:
     /// to their buffers' usage: storage, transform feedback or transfer).
     virtual VkBufferUsageFlags crowdWriteUsage() const { return 0; }
     /// Attaches the technique's per-crowd resources (GpuCrowd::attach, a
-    /// TechniqueExtension, named after `handle`) once the crowd is made; an
-    /// error refuses it.
-    virtual Status attachCrowdResources(GpuCrowd& /*crowd*/, backend::CrowdHandle /*handle*/) { return {}; }
+    /// TechniqueExtension, named after `handle`) once the crowd is made, with
+    /// the host's description (its meshes and clips are valid only during
+    /// this call); an error refuses it.
+    virtual Status attachCrowdResources(GpuCrowd& /*crowd*/, backend::CrowdHandle /*handle*/,
+                                        const backend::CrowdDesc& /*desc*/) {
+        return {};
+    }
     /// Outside the main pass: culls and bins the frame's instances into the
     /// tier lists with their counts in the indirect commands (the shared
     /// rule of CrowdLod.h against the technique's LOD state), and fills and

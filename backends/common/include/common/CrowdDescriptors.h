@@ -13,6 +13,7 @@
 #include "tessera/gpu/PipelineLayout.h"
 
 #include <array>
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <vector>
@@ -23,8 +24,12 @@ class CrowdDescriptors {
 public:
     enum class Mode { Storage, Texels };
 
-    /// The layout of `mode`'s bindings, visible to `stages`.
-    static gpu::PipelineLayout layout(gpu::Device& device, Mode mode, VkShaderStageFlags stages, std::string name);
+    /// The layout of `mode`'s bindings, visible to `stages`, plus a
+    /// technique's `extra` bindings and push constants (meshshader's
+    /// meshlets and pattern tables).
+    static gpu::PipelineLayout layout(gpu::Device& device, Mode mode, VkShaderStageFlags stages, std::string name,
+                                      std::initializer_list<gpu::BindingDesc> extra = {},
+                                      uint32_t pushConstantBytes = 0, VkShaderStageFlags pushConstantStages = 0);
 
     /// Writes for `crowd` in frame slot `slot` with this frame's uniforms.
     CrowdDescriptors(Mode mode, GpuCrowd& crowd, uint32_t slot, const gpu::UniformSlice& frame,

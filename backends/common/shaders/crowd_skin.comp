@@ -1,8 +1,10 @@
 #version 450
-// hulldomain's crowd near tier, pass 1 (compute, dispatched indirectly: one
-// workgroup per near slot the culling pass filled): skins the instance's cage
-// from its baked clip into the paper's 128-bit compressed vertices, which
-// the tessellated draw then fetches once per control point.
+// The crowd near tier's pass 1 on the backends with compute (hulldomain,
+// meshshader; ComputeCrowdCullPass), dispatched indirectly: one workgroup
+// per near slot the culling pass filled. Skins the instance's cage from its
+// baked clip into the paper's 128-bit compressed vertices, which the
+// tessellated draw (hull/domain or task/mesh) then fetches once per cage
+// vertex it reads.
 #extension GL_GOOGLE_include_directive : require
 #define TS_CROWD 1
 #include "character_common.glsl"

@@ -1,10 +1,11 @@
 #version 450
-// hulldomain's crowd culling and LOD binning (compute): one invocation per
-// instance runs the shared rule (tsLodUpdate, CrowdLod.h) against its state,
-// appends it to its tier's list for its creature, and its fading copy to the
-// previous tier's; a near instance also takes a compressed-cage slot. The
-// lists' counts are the instance counts of the indirect draws that follow,
-// so the CPU never learns them and nothing waits on a query.
+// Crowd culling and LOD binning in compute (hulldomain, meshshader;
+// ComputeCrowdCullPass): one invocation per instance runs the shared rule
+// (tsLodUpdate, CrowdLod.h) against its state, appends it to its tier's list
+// for its creature, and its fading copy to the previous tier's; a near
+// instance also takes a compressed-cage slot. The lists' counts are the
+// instance counts of the indirect draws that follow, so the CPU never learns
+// them and nothing waits on a query.
 #extension GL_GOOGLE_include_directive : require
 #define TS_CROWD 1
 #define TS_CROWD_LISTS_ACCESS writeonly

@@ -1,0 +1,24 @@
+#version 450
+// meshshader crowd: the task-shader commands of every list from the counts
+// the culling pass (crowd_cull.comp) appended, inside crowd.cull. The
+// shared culling writes indexed draw commands (the other compute backend
+// draws them as they are); a mesh-task draw needs (workgroups per instance,
+// instances in a row, rows), which no word of those commands holds.
+#extension GL_GOOGLE_include_directive : require
+#include "tessera/shaders/CrowdInstance.h"
+#include "tessera/shaders/CrowdMeshlet.h"
+
+layout(local_size_x = TS_CROWD_LISTS) in;
+
+layout(std430, set = 0, binding = TS_BINDING_CROWD_ARGS) readonly buffer ArgsBlock {
+    uint crowdArgs[];
+};
+layout(std430, set = 0, binding = TS_BINDING_CROWD_MESH_ARGS) buffer MeshArgsBlock {
+    CrowdMeshCommand meshArgs[];
+};
+
+void main() {
+    uint list = gl_LocalInvocationID.x;
+    uint count = crowdArgs[list * TS_CROWD_ARG_DRAW_WORDS + 1u];
+    meshArgs[list].groups = tsCrowdMeshCommand(count, meshArgs[list].groups.w);
+}
