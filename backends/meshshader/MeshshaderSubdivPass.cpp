@@ -13,8 +13,7 @@ namespace {
 
 constexpr VkShaderStageFlags kStages =
     VK_SHADER_STAGE_TASK_BIT_EXT | VK_SHADER_STAGE_MESH_BIT_EXT | VK_SHADER_STAGE_FRAGMENT_BIT;
-// Domains per task workgroup (mesh_patches.glsl).
-constexpr uint32_t kDomainsPerTask = 32;
+constexpr uint32_t kDomainsPerTask = TS_MESH_TASK_PATCHES;
 
 } // namespace
 

@@ -9,6 +9,7 @@
 
 #include "meshshader_terrain.mesh.spv.h"
 #include "meshshader_terrain.task.spv.h"
+
 #include "terrain_basic.frag.spv.h"
 
 namespace tessera::backends {
@@ -16,8 +17,7 @@ namespace {
 
 constexpr VkShaderStageFlags kStages =
     VK_SHADER_STAGE_TASK_BIT_EXT | VK_SHADER_STAGE_MESH_BIT_EXT | VK_SHADER_STAGE_FRAGMENT_BIT;
-// One task workgroup per 32 visible patches (meshshader_terrain.glsl).
-constexpr uint32_t kPatchesPerTask = 32;
+constexpr uint32_t kPatchesPerTask = TS_MESH_TASK_PATCHES;
 
 } // namespace
 

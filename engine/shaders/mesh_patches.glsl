@@ -15,7 +15,7 @@
 #ifndef MESH_PATCHES_GLSL
 #define MESH_PATCHES_GLSL
 
-#define MS_TASK_PATCHES 32u
+#define MS_TASK_PATCHES TS_MESH_TASK_PATCHES
 
 struct PatchTaskPayload {
     vec4 outer[MS_TASK_PATCHES];

@@ -82,6 +82,16 @@ PassSummary summarizeSeries(const Series& series) {
     summary.medianMs = toMs(lowerMiddle.ns + upperMiddle.ns) / 2.0;
     summary.meanMs = toMs(totalNs) / static_cast<double>(n);
     summary.statsMedianFrame = lowerMiddle.stats;
+    // Task and mesh invocations are counted on some frames only
+    // (Profiler::requestMeshInvocationCount): take the latest frame's that has them.
+    if (summary.statsMedianFrame)
+        for (auto it = series.frames.rbegin(); it != series.frames.rend(); ++it) {
+            const auto& stats = it->second.stats;
+            if (!stats || (stats->taskShaderInvocations == 0 && stats->meshShaderInvocations == 0)) continue;
+            summary.statsMedianFrame->taskShaderInvocations = stats->taskShaderInvocations;
+            summary.statsMedianFrame->meshShaderInvocations = stats->meshShaderInvocations;
+            break;
+        }
     return summary;
 }
 

@@ -66,6 +66,16 @@ public:
     /// Index passed to the latest beginFrame() (0 before the first).
     uint64_t currentFrame() const { return mFrame.load(std::memory_order_relaxed); }
 
+    /// Asks the GPU profiler to count task and mesh shader invocations in
+    /// the next frame it begins (a benchmark asks at each row's first
+    /// measured frame). Those counters are off otherwise, but for every
+    /// 16th frame: on NVIDIA (driver 580) a pipeline-statistics query with
+    /// them makes the mesh stage about 7x slower, where the mesh primitives
+    /// query costs nothing (docs/BACKENDS.md, "meshshader").
+    void requestMeshInvocationCount() { mMeshInvocationRequest.store(true, std::memory_order_relaxed); }
+    /// True once after requestMeshInvocationCount() (the GPU profiler asks).
+    bool takeMeshInvocationRequest() { return mMeshInvocationRequest.exchange(false, std::memory_order_relaxed); }
+
     /// Steady-clock nanoseconds since this profiler was constructed.
     uint64_t nowNs() const;
 
@@ -88,6 +98,7 @@ public:
 private:
     const std::chrono::steady_clock::time_point mEpoch;
     std::atomic<bool> mEnabled{false};
+    std::atomic<bool> mMeshInvocationRequest{false};
     std::atomic<uint64_t> mFrame{0};
 
     mutable std::mutex mMutex;

@@ -44,6 +44,11 @@
 #define TS_MESH_MAX_TRIANGLES 126u
 /// Pieces of the densest patch: 4 strips, 4 sides of 30 ring pairs, the centre.
 #define TS_MESH_MAX_PIECES 125u
+/// Patches (terrain patches, surface domains) per task workgroup: one task
+/// invocation each (mesh_patches.glsl; the draws' workgroup counts).
+#ifndef TS_MESH_TASK_PATCHES
+#define TS_MESH_TASK_PATCHES 32u
+#endif
 
 /// Bindings of the mesh-shader draws (after the terrain's or the
 /// character's): the pattern tables, and the patches the task stage expands
@@ -64,18 +69,26 @@ struct TsMeshKey {
 TS_CHECK_SIZE(TsMeshKey, 16)
 
 /// One patch's levels as the tessellator takes them, and its piece structure.
+/// The spacings are computed once here: placing a point then costs no
+/// division.
 struct TsMeshPatch {
-    uvec4 outerFxp;   ///< 16.16 outer levels (tsEmuFixedLevels)
-    uvec2 innerFxp;   ///< 16.16 inner levels
-    uvec2 points;     ///< inner points along u and v (4 .. 64)
-    uint rings;       ///< rings of the inner grid, the first included: min(points) / 2
-    uint pieceCount;  ///< pieces (mesh workgroups) the patch needs
+    uvec4 outerFxp;        ///< 16.16 outer levels (tsEmuFixedLevels)
+    uvec2 innerFxp;        ///< 16.16 inner levels
+    uvec2 points;          ///< inner points along u and v (4 .. 64)
+    uint rings;            ///< rings of the inner grid, the first included: min(points) / 2
+    uint pieceCount;       ///< pieces the patch has
+    TsOddSpacing outer[4]; ///< each outer edge's spacing
+    TsOddSpacing innerU;   ///< the inner axes' spacings
+    TsOddSpacing innerV;
 };
 
 TS_INLINE TsMeshPatch tsMeshPatch(vec4 outer, vec2 inner) {
     TsMeshPatch p;
     tsEmuFixedLevels(outer, inner, p.outerFxp, p.innerFxp);
-    p.points = uvec2(tsEmuInnerPoints(p.innerFxp.x), tsEmuInnerPoints(p.innerFxp.y));
+    for (uint e = 0u; e < 4u; ++e) p.outer[e] = tsOddSpacing(tsEmuPick4(p.outerFxp, e));
+    p.innerU = tsOddSpacing(p.innerFxp.x);
+    p.innerV = tsOddSpacing(p.innerFxp.y);
+    p.points = uvec2(max(tsOddPointCount(p.innerU), 4u), max(tsOddPointCount(p.innerV), 4u));
     p.rings = min(p.points.x, p.points.y) / 2u;
     p.pieceCount = tsEmuMinimal(p.outerFxp, p.innerFxp) ? 1u : 4u * p.rings - 3u;
     return p;
@@ -89,7 +102,7 @@ TS_INLINE bool tsMeshMinimal(TsMeshPatch p) {
 TS_INLINE uint tsMeshPieceKey(TsMeshPatch p, uint piece) {
     if (tsMeshMinimal(p)) return TS_MESH_KEY_MINIMAL;
     if (piece < 4u) {
-        uint outerPoints = tsOddPointCount(tsOddSpacing(tsEmuPick4(p.outerFxp, piece)));
+        uint outerPoints = tsOddPointCount(p.outer[piece]);
         uint innerPoints = tsEmuAlongAxis(piece) == 0u ? p.points.x : p.points.y;
         return (outerPoints / 2u - 1u) * TS_MESH_INNER_CLASSES + (innerPoints / 2u - 2u);
     }
@@ -115,7 +128,7 @@ TS_INLINE uint tsMeshPieceKey(TsMeshPatch p, uint piece) {
 /// where pieces hold a few triangles, do not spend a workgroup on each.
 TS_INLINE uint tsMeshPiecesPerGroup(TsMeshPatch p) {
     uint outer = 2u;
-    for (uint e = 0u; e < 4u; ++e) outer = max(outer, tsOddPointCount(tsOddSpacing(tsEmuPick4(p.outerFxp, e))));
+    for (uint e = 0u; e < 4u; ++e) outer = max(outer, tsOddPointCount(p.outer[e]));
     uint inner = max(p.points.x, p.points.y);
     uint points = max(outer + inner - 2u, 2u * inner);
     uint triangles = max(outer + inner - 4u, 2u * inner - 2u);
@@ -144,12 +157,22 @@ TS_INLINE uvec2 tsMeshRingGrid(uvec2 points, uint r, uint e, uint j) {
 /// piece `piece`, bit-identical to the hardware tessellator's gl_TessCoord.
 TS_INLINE vec2 tsMeshPiecePoint(TsMeshPatch p, uint piece, uint row, uint index) {
     if (tsMeshMinimal(p)) return vec2(float(index), float(row));
-    if (piece < 4u) {
-        uint ref = tsEmuRef(row == 0u ? TS_EMU_REF_OUTER : TS_EMU_REF_RING, index, 0u);
-        return tsEmuDomainPoint(ref, piece, p.outerFxp, p.innerFxp);
-    }
     uvec2 grid;
-    if (piece + 1u < p.pieceCount) {
+    if (piece < 4u && row == 0u) {
+        // The outer edge's points, as tsEmuDomainPoint places them: rows run
+        // from each edge's first corner (u = 0 falling in v, v = 0 rising in
+        // u, u = 1 rising in v, v = 1 falling in u).
+        TsOddSpacing s = p.outer[piece];
+        uint last = tsOddPointCount(s) - 1u;
+        float t = tsFixedToFloat(tsOddPlace(s, piece == 1u || piece == 2u ? index : last - index));
+        if (piece == 0u) return vec2(0.0f, t);
+        if (piece == 1u) return vec2(t, 0.0f);
+        if (piece == 2u) return vec2(1.0f, t);
+        return vec2(t, 1.0f);
+    } else if (piece < 4u) {
+        // The first ring's row on the strip's edge.
+        grid = tsMeshRingGrid(p.points, 1u, piece, index);
+    } else if (piece + 1u < p.pieceCount) {
         uint ring = 1u + (piece - 4u) / 4u;
         grid = tsMeshRingGrid(p.points, ring + row, (piece - 4u) % 4u, index);
     } else {
@@ -161,8 +184,7 @@ TS_INLINE vec2 tsMeshPiecePoint(TsMeshPatch p, uint piece, uint row, uint index)
         uint length = (wideU ? p.points.x : p.points.y) - 2u * last;
         grid = tsMeshRingGrid(p.points, last, edge, row == 0u ? index : length - 1u - index);
     }
-    return vec2(tsFixedToFloat(tsOddPlace(tsOddSpacing(p.innerFxp.x), grid.x)),
-                tsFixedToFloat(tsOddPlace(tsOddSpacing(p.innerFxp.y), grid.y)));
+    return vec2(tsFixedToFloat(tsOddPlace(p.innerU, grid.x)), tsFixedToFloat(tsOddPlace(p.innerV, grid.y)));
 }
 
 TS_NAMESPACE_END

@@ -54,6 +54,7 @@ private:
         uint64_t submitNs = 0;
         std::vector<Pass> passes; ///< the timed ones
         bool pending = false;
+        bool countsMeshInvocations = false; ///< mMeshStatisticsPool's queries ran
     };
 
     bool mInTimedPass = false;
@@ -64,6 +65,13 @@ private:
     VkQueryPool mStatisticsPool = VK_NULL_HANDLE;
     /// VK_QUERY_TYPE_MESH_PRIMITIVES_GENERATED_EXT, where the device has it.
     VkQueryPool mMeshPrimitivesPool = VK_NULL_HANDLE;
+    /// mStatisticsPool's statistics plus task and mesh shader invocations,
+    /// used instead of it on the frames that count those
+    /// (Profiler::requestMeshInvocationCount).
+    VkQueryPool mMeshStatisticsPool = VK_NULL_HANDLE;
+    VkQueryPool statisticsPool(const Slot& s) const {
+        return s.countsMeshInvocations ? mMeshStatisticsPool : mStatisticsPool;
+    }
     VkQueryPipelineStatisticFlags mStatisticFlags = 0;
     uint32_t mStatisticCount = 0;
     bool mTimestamps = false;
