@@ -23,12 +23,14 @@ constexpr uint32_t kTrianglesPerTask = 32;
 MeshshaderCharacterPass::MeshshaderCharacterPass(gpu::Device& device, VkFormat colorFormat, VkFormat depthFormat,
                                                  bool wireframe) {
     const tessellator::MeshTrianglePatternLibrary& library = tessellator::MeshTrianglePatternLibrary::uniformFractionalOdd();
-    mTables = MeshshaderPatternTables(device, library.keys(), library.triangles(), "meshshader.character");
+    mTables = MeshshaderPatternTables(device, library.keys(), library.triangles(), "meshshader.character",
+                                      library.groups());
     constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     mLayout = characterLayout(device, CharacterBindings::Draw, kStages, storage, sizeof(uint32_t),
                               VK_SHADER_STAGE_TASK_BIT_EXT, "meshshader.characterPatches.layout",
                               {{TS_BINDING_MESH_KEYS, storage, kStages},
                                {TS_BINDING_MESH_TRIANGLES, storage, kStages},
+                               {TS_BINDING_MESH_GROUPS, storage, kStages},
                                {TS_BINDING_MESH_PATCHES, storage, kStages}});
     for (int single = 0; single < 2; ++single) {
         gpu::GraphicsPipelineDesc desc;
@@ -60,8 +62,9 @@ void MeshshaderCharacterPass::record(gpu::FrameContext& frame, const CharacterIn
     if (instance.compressed) compressed = {instance.compressed->buffer.handle(), 0, VK_WHOLE_SIZE};
     const VkDescriptorBufferInfo indices{c.indices().handle(), 0, VK_WHOLE_SIZE};
     const auto tables = mTables.descriptors();
+    const VkDescriptorBufferInfo groups = mTables.groupsDescriptor();
     constexpr VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    const VkWriteDescriptorSet writes[5] = {bufferWrite(TS_BINDING_CAGE_VERTICES, storage, &cage),
+    const VkWriteDescriptorSet writes[6] = {bufferWrite(TS_BINDING_MESH_GROUPS, storage, &groups),bufferWrite(TS_BINDING_CAGE_VERTICES, storage, &cage),
                                             bufferWrite(TS_BINDING_COMPRESSED, storage, &compressed),
                                             bufferWrite(TS_BINDING_MESH_KEYS, storage, &tables[0]),
                                             bufferWrite(TS_BINDING_MESH_TRIANGLES, storage, &tables[1]),

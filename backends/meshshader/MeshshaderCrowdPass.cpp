@@ -46,11 +46,13 @@ MeshshaderCrowdPass::MeshshaderCrowdPass(gpu::Device& device, VkFormat colorForm
 
     const tessellator::MeshTrianglePatternLibrary& library =
         tessellator::MeshTrianglePatternLibrary::uniformFractionalOdd();
-    mTables = MeshshaderPatternTables(device, library.keys(), library.triangles(), "meshshader.crowd.near");
+    mTables = MeshshaderPatternTables(device, library.keys(), library.triangles(), "meshshader.crowd.near",
+                                      library.groups());
     mLayout = CrowdDescriptors::layout(device, CrowdDescriptors::Mode::Storage, kStages, "meshshader.crowd.layout",
                                        {{TS_BINDING_CROWD_INDICES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, kStages},
                                         {TS_BINDING_MESH_KEYS, kStorage, kStages},
                                         {TS_BINDING_MESH_TRIANGLES, kStorage, kStages},
+                                        {TS_BINDING_MESH_GROUPS, kStorage, kStages},
                                         {TS_BINDING_CROWD_MESHLETS, kStorage, kStages},
                                         {TS_BINDING_CROWD_MESHLET_VERTICES, kStorage, kStages},
                                         {TS_BINDING_CROWD_MESHLET_TRIANGLES, kStorage, kStages}},
@@ -104,11 +106,13 @@ void MeshshaderCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
     VkCommandBuffer cmd = frame.cmd();
     const uint32_t creatures = uint32_t(crowd.creatures().size());
     const auto tables = mTables.descriptors();
+    const VkDescriptorBufferInfo groups = mTables.groupsDescriptor();
     const VkBufferView indices = crowd.indicesView();
     const VkDescriptorBufferInfo meshlets{resources.meshletBuffer().handle(), 0, VK_WHOLE_SIZE};
     const VkDescriptorBufferInfo meshletVertices{resources.meshletVertices().handle(), 0, VK_WHOLE_SIZE};
     const VkDescriptorBufferInfo meshletTriangles{resources.meshletTriangles().handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet extra[6] = {texelWrite(TS_BINDING_CROWD_INDICES, &indices),
+    const VkWriteDescriptorSet extra[7] = {texelWrite(TS_BINDING_CROWD_INDICES, &indices),
+                                           bufferWrite(TS_BINDING_MESH_GROUPS, kStorage, &groups),
                                            bufferWrite(TS_BINDING_MESH_KEYS, kStorage, &tables[0]),
                                            bufferWrite(TS_BINDING_MESH_TRIANGLES, kStorage, &tables[1]),
                                            bufferWrite(TS_BINDING_CROWD_MESHLETS, kStorage, &meshlets),

@@ -39,6 +39,25 @@ vec3 tsMeshTriangleLocalPoint(TsMeshTrianglePatch p, uint piece, uvec4 entry, ui
     return tsMeshTrianglePiecePoint(p, piece, row, local - row * entry.z);
 }
 
+#ifdef MS_TRIANGLE_GROUPS
+// The uniform-level triangle patches' group table
+// (MeshTrianglePatternLibrary::groups): per point class (x first group
+// entry, y groups per patch, z patches per group), then the groups (x first
+// piece, y pieces, z points, w triangles).
+layout(std430, set = 0, binding = TS_BINDING_MESH_GROUPS) readonly buffer MeshGroups {
+    uvec4 tsMeshGroups[];
+};
+
+uvec4 tsMeshTriangleClassInfo(TsMeshTrianglePatch p) {
+    return tsMeshGroups[p.points / 2u - 1u];
+}
+
+// Mesh workgroups for `patches` patches of one class.
+uint tsMeshTriangleGroupCount(uvec4 info, uint patches) {
+    return info.z > 1u ? (patches + info.z - 1u) / info.z : patches * info.y;
+}
+#endif
+
 // Local point indices of triangle `t` of the piece.
 uvec3 tsMeshLocalTriangle(uvec4 entry, uint t) {
     uint packed = tsMeshTriangles[entry.x + t];

@@ -114,3 +114,33 @@ TEST(TessellatorMeshTrianglePattern, AnotherClassDoesNotMatch) {
     EXPECT_NE(assembled(9.0f).size(), test::referenceTriangleTriangles(11.0f).size());
     EXPECT_FALSE(assembled(10.0f) == test::referenceTriangleTriangles(9.5f));
 }
+
+// The group table the mesh stage draws by: for every point class, the groups
+// cover the patch's pieces in order, each within one workgroup's limits, and
+// small patches share a workgroup.
+TEST(TessellatorMeshTrianglePattern, GroupsCoverEveryPieceWithinAWorkgroup) {
+    const MeshTrianglePatternLibrary& library = MeshTrianglePatternLibrary::uniformFractionalOdd();
+    const auto groups = library.groups();
+    ASSERT_GE(groups.size(), TS_MESH_TRI_CLASSES);
+    for (uint32_t c = 0; c < TS_MESH_TRI_CLASSES; ++c) {
+        SCOPED_TRACE("class " + std::to_string(c));
+        const shader::TsMeshTrianglePatch p = shader::tsMeshTrianglePatch(c == 0 ? 1.0f : float(2 * c + 1));
+        EXPECT_EQ(p.points / 2 - 1, c);
+        const glm::uvec4 info = groups[c];
+        ASSERT_GE(info.y, 1u);
+        ASSERT_GE(info.z, 1u);
+        uint32_t next = 0, triangles = 0;
+        for (uint32_t g = 0; g < info.y; ++g) {
+            const glm::uvec4 group = groups[info.x + g];
+            EXPECT_EQ(group.x, next);
+            next += group.y;
+            EXPECT_LE(group.z * info.z, TS_MESH_MAX_VERTICES);
+            EXPECT_LE(group.w * info.z, TS_MESH_MAX_TRIANGLES);
+            triangles += group.w;
+        }
+        EXPECT_EQ(next, p.pieceCount);
+        EXPECT_EQ(triangles, Tessellator::countTriangles(Domain::Triangle, Partitioning::FractionalOdd,
+                                                         {{float(2 * c + 1), float(2 * c + 1), float(2 * c + 1), 0.0f},
+                                                          {float(2 * c + 1), 0.0f}}));
+    }
+}

@@ -1,6 +1,7 @@
 // meshshader_character.glsl: what a character's task workgroup hands its
-// mesh workgroups: its first cage triangle and the pieces per triangle, so
-// workgroup g draws piece g % pieces of triangle firstTriangle + g / pieces;
+// mesh workgroups: its first cage triangle and how many it covers; the
+// group table (mesh_tess.glsl) says which triangles and pieces workgroup g
+// draws (several small patches, or some pieces of one large one);
 // in a crowd's near tier (TS_CROWD) also the instance's list entry, its
 // level (selected once, by the task workgroup) and its creature's first
 // cage index in the crowd's index buffer.
@@ -11,7 +12,7 @@
 
 struct CharacterTaskPayload {
     uint firstTriangle;
-    uint pieces;
+    uint triangles;
 #ifdef TS_CROWD
     uint entry;      // index into crowdLists
     float level;     // the instance's near level (tsCrowdSelect)

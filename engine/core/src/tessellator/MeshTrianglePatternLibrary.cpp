@@ -3,6 +3,7 @@
 #include "EdgeSpacing.h"
 #include "RowStitcher.h"
 
+#include <algorithm>
 #include <cassert>
 #include <numeric>
 
@@ -69,6 +70,37 @@ MeshTrianglePatternLibrary::MeshTrianglePatternLibrary() {
     // The centre (or, at level 1, the whole patch): one triangle over the
     // first points of edges 0, 1 and 2.
     add(TS_MESH_TRI_KEY_CENTRE, 3, 0, [](detail::RowStitcher& s, Rows a, Rows) { s.triangle(a[0], a[1], a[2]); });
+    buildGroups();
+}
+
+void MeshTrianglePatternLibrary::buildGroups() {
+    mGroups.resize(TS_MESH_TRI_CLASSES);
+    for (uint32_t c = 0; c < TS_MESH_TRI_CLASSES; ++c) {
+        // A level whose patch has 2 * (c + 1) points an edge.
+        const shader::TsMeshTrianglePatch p = shader::tsMeshTrianglePatch(c == 0 ? 1.0f : float(2 * c + 1));
+        const auto first = static_cast<uint32_t>(mGroups.size());
+        glm::uvec4 group{0, 0, 0, 0};
+        uint32_t patchPoints = 0, patchTriangles = 0;
+        for (uint32_t piece = 0; piece < p.pieceCount; ++piece) {
+            const glm::uvec4 entry = mKeys[shader::tsMeshTrianglePieceKey(p, piece)].entry;
+            const uint32_t points = entry.z + entry.w;
+            if (group.y > 0 && (group.z + points > TS_MESH_MAX_VERTICES || group.w + entry.y > TS_MESH_MAX_TRIANGLES)) {
+                mGroups.push_back(group);
+                group = {piece, 0, 0, 0};
+            }
+            ++group.y;
+            group.z += points;
+            group.w += entry.y;
+            patchPoints += points;
+            patchTriangles += entry.y;
+        }
+        mGroups.push_back(group);
+        const auto groupsPerPatch = static_cast<uint32_t>(mGroups.size()) - first;
+        const uint32_t patchesPerGroup =
+            groupsPerPatch > 1 ? 1
+                               : std::min(TS_MESH_MAX_VERTICES / patchPoints, TS_MESH_MAX_TRIANGLES / patchTriangles);
+        mGroups[c] = {first, groupsPerPatch, patchesPerGroup, 0};
+    }
 }
 
 } // namespace tessera::tessellator

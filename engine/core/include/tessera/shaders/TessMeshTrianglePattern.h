@@ -46,6 +46,11 @@
 /// rings, and the centre.
 #define TS_MESH_TRI_MAX_PIECES 94u
 
+/// Point classes of a uniform-level patch: 2, 4, .. 64 points an edge.
+#define TS_MESH_TRI_CLASSES 32u
+/// The group table's binding (MeshTrianglePatternLibrary::groups()).
+#define TS_BINDING_MESH_GROUPS 29
+
 TS_NAMESPACE_BEGIN
 
 /// One uniform-level triangle patch and its piece structure.

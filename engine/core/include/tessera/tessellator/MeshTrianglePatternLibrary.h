@@ -26,15 +26,27 @@ public:
     /// Triangles of all keys back to back: three 8-bit local point indices
     /// (a | b << 8 | c << 16), in Tessellator's order and winding.
     std::span<const uint32_t> triangles() const { return mTriangles; }
+    /// How a draw's mesh workgroups share its patches, which all have one
+    /// level: first TS_MESH_TRI_CLASSES entries, one per point class
+    /// (points / 2 - 1): x = its first group entry, y = groups per patch,
+    /// z = patches per group (more than 1 when a whole patch is small);
+    /// then the group entries: x = first piece, y = pieces, z = points,
+    /// w = triangles, consecutive pieces packed greedily up to
+    /// TS_MESH_MAX_VERTICES and TS_MESH_MAX_TRIANGLES. A mesh workgroup then
+    /// holds about 100 triangles at any level, where one piece each would
+    /// give a level-15 character's mesh workgroups 15 on average.
+    std::span<const glm::uvec4> groups() const { return mGroups; }
 
 private:
     MeshTrianglePatternLibrary();
     // Stitches rows A = 0 .. rowA - 1 and B = rowA .. rowA + rowB - 1 with
     // `stitch` and stores the triangles under `key`.
     template <typename Stitch> void add(uint32_t key, uint32_t rowA, uint32_t rowB, Stitch&& stitch);
+    void buildGroups();
 
     std::vector<shader::TsMeshKey> mKeys;
     std::vector<uint32_t> mTriangles;
+    std::vector<glm::uvec4> mGroups;
 };
 
 } // namespace tessera::tessellator
