@@ -202,7 +202,7 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
     group("Benchmarks");
     choice("--bench", o.bench, {"terrain", "characters", "crowd", "crowd-sim", "subdiv"}, "NAME",
            "terrain: the first paper's Table 2, a far and a close-up view, every mode (adaptive with every metric "
-           "unless --tess-metric is given), with --backend all hulldomain, r2vb and streamout at the emulated "
+           "unless --tess-metric is given), with --backend all every backend the device runs at the emulated "
            "tessellator's maximum level (14.99), a Chrome trace per backend and a side-by-side table | characters: "
            "the crowd (--crowd, --model) posed at one time, drawn two-pass and single-pass on every backend at "
            "min(--character-level, 14.99) and at --character-level where a backend reaches it (default 32); GPU "

@@ -36,8 +36,7 @@ Result<std::unique_ptr<WindowController>> WindowController::create(SceneRun& run
     OverlayContext* context = controller->mOverlay.get();
     SessionGpu::setOverlayRecorder(run.session(), [context](gpu::FrameContext& frame) { context->record(frame); });
     // Every GPU backend is offered; one the device cannot run says so when picked.
-    for (const char* name : kBackendPreference) controller->mState.backends.push_back(name);
-    std::reverse(controller->mState.backends.begin(), controller->mState.backends.end());
+    for (const char* name : kBackendGenerations) controller->mState.backends.push_back(name);
     if (!options.agents.empty()) controller->mState.agents = options.agents.front();
     else controller->mState.agents = 2000;
     controller->mLastFrame = std::chrono::steady_clock::now();

@@ -18,6 +18,10 @@ namespace tessera::runtime {
 /// named, or on a device that runs none of the others.
 inline constexpr const char* kBackendPreference[] = {"hulldomain", "streamout", "r2vb", "meshshader"};
 
+/// The GPU backends by pipeline generation, oldest first (D3D9 to D3D12):
+/// the window's keys 1 to 4.
+inline constexpr const char* kBackendGenerations[] = {"r2vb", "streamout", "hulldomain", "meshshader"};
+
 /// Prints every backend with its capabilities, checked against the device.
 Status listBackends(const Options& options);
 /// Prints the Vulkan devices.
