@@ -115,32 +115,63 @@ TEST(TessellatorMeshTrianglePattern, AnotherClassDoesNotMatch) {
     EXPECT_FALSE(assembled(10.0f) == test::referenceTriangleTriangles(9.5f));
 }
 
-// The group table the mesh stage draws by: for every point class, the groups
-// cover the patch's pieces in order, each within one workgroup's limits, and
-// small patches share a workgroup.
+// The group table the mesh stage draws by: for every point class, the
+// groups' chains cover every piece once, each group within one workgroup's
+// limits with its chains' shared rows counted once, and small patches share
+// a workgroup.
 TEST(TessellatorMeshTrianglePattern, GroupsCoverEveryPieceWithinAWorkgroup) {
     const MeshTrianglePatternLibrary& library = MeshTrianglePatternLibrary::uniformFractionalOdd();
-    const auto groups = library.groups();
-    ASSERT_GE(groups.size(), TS_MESH_TRI_CLASSES);
+    const auto table = library.groups();
+    ASSERT_GE(table.size(), TS_MESH_TRI_CLASSES);
+    uint32_t points15 = 0, triangles15 = 0;
     for (uint32_t c = 0; c < TS_MESH_TRI_CLASSES; ++c) {
         SCOPED_TRACE("class " + std::to_string(c));
-        const shader::TsMeshTrianglePatch p = shader::tsMeshTrianglePatch(c == 0 ? 1.0f : float(2 * c + 1));
+        const float level = c == 0 ? 1.0f : float(2 * c + 1);
+        const shader::TsMeshTrianglePatch p = shader::tsMeshTrianglePatch(level);
         EXPECT_EQ(p.points / 2 - 1, c);
-        const glm::uvec4 info = groups[c];
+        const glm::uvec4 info = table[c];
         ASSERT_GE(info.y, 1u);
         ASSERT_GE(info.z, 1u);
-        uint32_t next = 0, triangles = 0;
+        std::vector<int> seen(p.pieceCount, 0);
+        uint32_t patchTriangles = 0;
         for (uint32_t g = 0; g < info.y; ++g) {
-            const glm::uvec4 group = groups[info.x + g];
-            EXPECT_EQ(group.x, next);
-            next += group.y;
+            const glm::uvec4 group = table[info.x + g];
+            uint32_t points = 0, triangles = 0;
+            for (uint32_t k = 0; k < group.y; ++k) {
+                const glm::uvec4 chain = table[group.x + k];
+                if (chain.x == TS_MESH_TRI_CHAIN_CENTRE) {
+                    ++seen[p.pieceCount - 1];
+                    points += 3;
+                    triangles += 1;
+                    continue;
+                }
+                ASSERT_LE(chain.y, chain.z);
+                for (uint32_t q = chain.y; q <= chain.z; ++q) {
+                    const uint32_t piece = 3 * q + chain.x;
+                    ASSERT_LT(piece, p.pieceCount);
+                    ++seen[piece];
+                    triangles += library.keys()[shader::tsMeshTrianglePieceKey(p, piece)].entry.y;
+                }
+                for (uint32_t r = chain.y; r <= chain.z + 1; ++r) points += p.points - 2 * r;
+            }
+            EXPECT_EQ(points, group.z);
+            EXPECT_EQ(triangles, group.w);
             EXPECT_LE(group.z * info.z, TS_MESH_MAX_VERTICES);
-            EXPECT_LE(group.w * info.z, TS_MESH_MAX_TRIANGLES);
-            triangles += group.w;
+            EXPECT_LE(group.w * info.z, TS_MESH_TRI_GROUP_MAX_TRIANGLES);
+            patchTriangles += triangles;
+            if (c == 7) {
+                points15 += points;
+                triangles15 += triangles;
+            }
         }
-        EXPECT_EQ(next, p.pieceCount);
-        EXPECT_EQ(triangles, Tessellator::countTriangles(Domain::Triangle, Partitioning::FractionalOdd,
-                                                         {{float(2 * c + 1), float(2 * c + 1), float(2 * c + 1), 0.0f},
-                                                          {float(2 * c + 1), 0.0f}}));
+        for (uint32_t piece = 0; piece < p.pieceCount; ++piece) EXPECT_EQ(seen[piece], 1) << "piece " << piece;
+        EXPECT_EQ(patchTriangles, Tessellator::countTriangles(Domain::Triangle, Partitioning::FractionalOdd,
+                                                              {{level, level, level, 0.0f}, {level, 0.0f}}));
     }
+    // Level 15 (16 points an edge): 337 triangles from 229 evaluated points
+    // (three edge chains of 72 points and the centre, one chain cut where a
+    // workgroup fills, repeating a 10-point row); a piece a workgroup
+    // evaluated 381.
+    EXPECT_EQ(triangles15, 337u);
+    EXPECT_EQ(points15, 229u);
 }

@@ -74,33 +74,72 @@ MeshTrianglePatternLibrary::MeshTrianglePatternLibrary() {
 }
 
 void MeshTrianglePatternLibrary::buildGroups() {
-    mGroups.resize(TS_MESH_TRI_CLASSES);
+    struct Group {
+        std::vector<glm::uvec4> chains;
+        uint32_t points = 0, triangles = 0;
+    };
+    std::vector<glm::uvec4> classes(TS_MESH_TRI_CLASSES);
+    std::vector<std::vector<Group>> groupsOf(TS_MESH_TRI_CLASSES);
     for (uint32_t c = 0; c < TS_MESH_TRI_CLASSES; ++c) {
         // A level whose patch has 2 * (c + 1) points an edge.
         const shader::TsMeshTrianglePatch p = shader::tsMeshTrianglePatch(c == 0 ? 1.0f : float(2 * c + 1));
-        const auto first = static_cast<uint32_t>(mGroups.size());
-        glm::uvec4 group{0, 0, 0, 0};
+        std::vector<Group>& groups = groupsOf[c];
+        groups.emplace_back();
         uint32_t patchPoints = 0, patchTriangles = 0;
-        for (uint32_t piece = 0; piece < p.pieceCount; ++piece) {
-            const glm::uvec4 entry = mKeys[shader::tsMeshTrianglePieceKey(p, piece)].entry;
-            const uint32_t points = entry.z + entry.w;
-            if (group.y > 0 && (group.z + points > TS_MESH_MAX_VERTICES || group.w + entry.y > TS_MESH_MAX_TRIANGLES)) {
-                mGroups.push_back(group);
-                group = {piece, 0, 0, 0};
+        // Adds `points` and `triangles` to the open group, first opening a
+        // new one (and so a new chain) when they would not fit.
+        auto fits = [&](uint32_t points, uint32_t triangles) {
+            const Group& g = groups.back();
+            return g.points + points <= TS_MESH_MAX_VERTICES && g.triangles + triangles <= TS_MESH_TRI_GROUP_MAX_TRIANGLES;
+        };
+        for (uint32_t e = 0; e < 3 && p.rings > 1; ++e)
+            for (uint32_t q = 0; q + 1 < p.rings; ++q) {
+                const glm::uvec4 entry = mKeys[shader::tsMeshTrianglePieceKey(p, 3 * q + e)].entry;
+                Group* g = &groups.back();
+                const bool extends = !g->chains.empty() && g->chains.back().x == e && g->chains.back().z + 1 == q;
+                // Extending a chain adds only the piece's inside row.
+                const uint32_t points = extends ? entry.w : entry.z + entry.w;
+                if (!extends || !fits(points, entry.y)) {
+                    if (!fits(entry.z + entry.w, entry.y)) groups.emplace_back();
+                    g = &groups.back();
+                    g->chains.push_back({e, q, q, 0});
+                    g->points += entry.z + entry.w;
+                } else {
+                    g->chains.back().z = q;
+                    g->points += entry.w;
+                }
+                g->triangles += entry.y;
             }
-            ++group.y;
-            group.z += points;
-            group.w += entry.y;
-            patchPoints += points;
-            patchTriangles += entry.y;
+        if (!fits(3, 1)) groups.emplace_back();
+        groups.back().chains.push_back({TS_MESH_TRI_CHAIN_CENTRE, 0, 0, 0});
+        groups.back().points += 3;
+        groups.back().triangles += 1;
+        for (const Group& g : groups) {
+            patchPoints += g.points;
+            patchTriangles += g.triangles;
         }
-        mGroups.push_back(group);
-        const auto groupsPerPatch = static_cast<uint32_t>(mGroups.size()) - first;
+        const auto groupsPerPatch = static_cast<uint32_t>(groups.size());
         const uint32_t patchesPerGroup =
             groupsPerPatch > 1 ? 1
-                               : std::min(TS_MESH_MAX_VERTICES / patchPoints, TS_MESH_MAX_TRIANGLES / patchTriangles);
-        mGroups[c] = {first, groupsPerPatch, patchesPerGroup, 0};
+                               : std::min(TS_MESH_MAX_VERTICES / patchPoints,
+                                          TS_MESH_TRI_GROUP_MAX_TRIANGLES / patchTriangles);
+        classes[c] = {0, groupsPerPatch, patchesPerGroup, 0};
     }
+    // Lay out: classes, every class's groups, then every chain.
+    uint32_t groupCount = 0;
+    for (const auto& groups : groupsOf) groupCount += static_cast<uint32_t>(groups.size());
+    mGroups = classes;
+    uint32_t nextChain = TS_MESH_TRI_CLASSES + groupCount;
+    std::vector<glm::uvec4> chains;
+    for (uint32_t c = 0; c < TS_MESH_TRI_CLASSES; ++c) {
+        mGroups[c].x = static_cast<uint32_t>(mGroups.size());
+        for (const Group& g : groupsOf[c]) {
+            mGroups.push_back({nextChain, static_cast<uint32_t>(g.chains.size()), g.points, g.triangles});
+            nextChain += static_cast<uint32_t>(g.chains.size());
+            chains.insert(chains.end(), g.chains.begin(), g.chains.end());
+        }
+    }
+    mGroups.insert(mGroups.end(), chains.begin(), chains.end());
 }
 
 } // namespace tessera::tessellator

@@ -50,6 +50,12 @@
 #define TS_MESH_TRI_CLASSES 32u
 /// The group table's binding (MeshTrianglePatternLibrary::groups()).
 #define TS_BINDING_MESH_GROUPS 29
+/// Triangles one character mesh workgroup may emit: the Vulkan minimum of
+/// maxMeshOutputPrimitives, twice the quads' TS_MESH_MAX_TRIANGLES, so a
+/// chain of ring pieces shares more rows (MeshTrianglePatternLibrary::groups).
+#define TS_MESH_TRI_GROUP_MAX_TRIANGLES 256u
+/// A chain's edge value for the centre triangle.
+#define TS_MESH_TRI_CHAIN_CENTRE 3u
 
 TS_NAMESPACE_BEGIN
 

@@ -27,14 +27,19 @@ public:
     /// (a | b << 8 | c << 16), in Tessellator's order and winding.
     std::span<const uint32_t> triangles() const { return mTriangles; }
     /// How a draw's mesh workgroups share its patches, which all have one
-    /// level: first TS_MESH_TRI_CLASSES entries, one per point class
-    /// (points / 2 - 1): x = its first group entry, y = groups per patch,
-    /// z = patches per group (more than 1 when a whole patch is small);
-    /// then the group entries: x = first piece, y = pieces, z = points,
-    /// w = triangles, consecutive pieces packed greedily up to
-    /// TS_MESH_MAX_VERTICES and TS_MESH_MAX_TRIANGLES. A mesh workgroup then
-    /// holds about 100 triangles at any level, where one piece each would
-    /// give a level-15 character's mesh workgroups 15 on average.
+    /// level, as entries of one table: first TS_MESH_TRI_CLASSES entries, one
+    /// per point class (points / 2 - 1): x = its first group entry, y =
+    /// groups per patch, z = patches per group (more than 1 when a whole
+    /// patch is small); then each class's groups: x = the entry of its first
+    /// chain, y = chains, z = points, w = triangles; then the chains: x = an
+    /// edge (or TS_MESH_TRI_CHAIN_CENTRE), y = first ring pair q0, z = last
+    /// q1. A chain is the pieces (q0 .. q1) along one edge, which share their
+    /// rows: ring q + 1's row is the outside row of piece q + 1 and the
+    /// inside row of piece q, so each row is placed and evaluated once.
+    /// Chains are packed greedily up to TS_MESH_MAX_VERTICES points and
+    /// TS_MESH_TRI_GROUP_MAX_TRIANGLES triangles: a level-15 patch is three
+    /// chains (72 points, 112 triangles each) and the centre, 0.65 points a
+    /// triangle where a piece a workgroup evaluated 1.13.
     std::span<const glm::uvec4> groups() const { return mGroups; }
 
 private:
