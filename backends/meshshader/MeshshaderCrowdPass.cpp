@@ -47,7 +47,7 @@ MeshshaderCrowdPass::MeshshaderCrowdPass(gpu::Device& device, VkFormat colorForm
     const tessellator::MeshTrianglePatternLibrary& library =
         tessellator::MeshTrianglePatternLibrary::uniformFractionalOdd();
     mTables = MeshshaderPatternTables(device, library.keys(), library.triangles(), "meshshader.crowd.near",
-                                      library.groups());
+                                      library.crowdGroups());
     mLayout = CrowdDescriptors::layout(device, CrowdDescriptors::Mode::Storage, kStages, "meshshader.crowd.layout",
                                        {{TS_BINDING_CROWD_INDICES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, kStages},
                                         {TS_BINDING_MESH_KEYS, kStorage, kStages},

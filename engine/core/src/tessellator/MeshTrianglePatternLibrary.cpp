@@ -70,10 +70,11 @@ MeshTrianglePatternLibrary::MeshTrianglePatternLibrary() {
     // The centre (or, at level 1, the whole patch): one triangle over the
     // first points of edges 0, 1 and 2.
     add(TS_MESH_TRI_KEY_CENTRE, 3, 0, [](detail::RowStitcher& s, Rows a, Rows) { s.triangle(a[0], a[1], a[2]); });
-    buildGroups();
+    mGroups = buildGroups(TS_MESH_TRI_GROUP_MAX_TRIANGLES);
+    mCrowdGroups = buildGroups(TS_MESH_MAX_TRIANGLES);
 }
 
-void MeshTrianglePatternLibrary::buildGroups() {
+std::vector<glm::uvec4> MeshTrianglePatternLibrary::buildGroups(uint32_t maxTriangles) const {
     struct Group {
         std::vector<glm::uvec4> chains;
         uint32_t points = 0, triangles = 0;
@@ -90,7 +91,7 @@ void MeshTrianglePatternLibrary::buildGroups() {
         // new one (and so a new chain) when they would not fit.
         auto fits = [&](uint32_t points, uint32_t triangles) {
             const Group& g = groups.back();
-            return g.points + points <= TS_MESH_MAX_VERTICES && g.triangles + triangles <= TS_MESH_TRI_GROUP_MAX_TRIANGLES;
+            return g.points + points <= TS_MESH_MAX_VERTICES && g.triangles + triangles <= maxTriangles;
         };
         for (uint32_t e = 0; e < 3 && p.rings > 1; ++e)
             for (uint32_t q = 0; q + 1 < p.rings; ++q) {
@@ -121,25 +122,25 @@ void MeshTrianglePatternLibrary::buildGroups() {
         const auto groupsPerPatch = static_cast<uint32_t>(groups.size());
         const uint32_t patchesPerGroup =
             groupsPerPatch > 1 ? 1
-                               : std::min(TS_MESH_MAX_VERTICES / patchPoints,
-                                          TS_MESH_TRI_GROUP_MAX_TRIANGLES / patchTriangles);
+                               : std::min(TS_MESH_MAX_VERTICES / patchPoints, maxTriangles / patchTriangles);
         classes[c] = {0, groupsPerPatch, patchesPerGroup, 0};
     }
     // Lay out: classes, every class's groups, then every chain.
     uint32_t groupCount = 0;
     for (const auto& groups : groupsOf) groupCount += static_cast<uint32_t>(groups.size());
-    mGroups = classes;
+    std::vector<glm::uvec4> table = classes;
     uint32_t nextChain = TS_MESH_TRI_CLASSES + groupCount;
     std::vector<glm::uvec4> chains;
     for (uint32_t c = 0; c < TS_MESH_TRI_CLASSES; ++c) {
-        mGroups[c].x = static_cast<uint32_t>(mGroups.size());
+        table[c].x = static_cast<uint32_t>(table.size());
         for (const Group& g : groupsOf[c]) {
-            mGroups.push_back({nextChain, static_cast<uint32_t>(g.chains.size()), g.points, g.triangles});
+            table.push_back({nextChain, static_cast<uint32_t>(g.chains.size()), g.points, g.triangles});
             nextChain += static_cast<uint32_t>(g.chains.size());
             chains.insert(chains.end(), g.chains.begin(), g.chains.end());
         }
     }
-    mGroups.insert(mGroups.end(), chains.begin(), chains.end());
+    table.insert(table.end(), chains.begin(), chains.end());
+    return table;
 }
 
 } // namespace tessera::tessellator

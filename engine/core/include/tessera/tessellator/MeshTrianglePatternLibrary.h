@@ -41,17 +41,21 @@ public:
     /// chains (72 points, 112 triangles each) and the centre, 0.65 points a
     /// triangle where a piece a workgroup evaluated 1.13.
     std::span<const glm::uvec4> groups() const { return mGroups; }
+    /// The same for a crowd's near tier, whose mesh stage writes two more
+    /// attributes a point: its workgroups keep to TS_MESH_MAX_TRIANGLES.
+    std::span<const glm::uvec4> crowdGroups() const { return mCrowdGroups; }
 
 private:
     MeshTrianglePatternLibrary();
     // Stitches rows A = 0 .. rowA - 1 and B = rowA .. rowA + rowB - 1 with
     // `stitch` and stores the triangles under `key`.
     template <typename Stitch> void add(uint32_t key, uint32_t rowA, uint32_t rowB, Stitch&& stitch);
-    void buildGroups();
+    std::vector<glm::uvec4> buildGroups(uint32_t maxTriangles) const;
 
     std::vector<shader::TsMeshKey> mKeys;
     std::vector<uint32_t> mTriangles;
     std::vector<glm::uvec4> mGroups;
+    std::vector<glm::uvec4> mCrowdGroups;
 };
 
 } // namespace tessera::tessellator
