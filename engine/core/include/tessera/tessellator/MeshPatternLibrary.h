@@ -27,10 +27,6 @@ public:
 
 private:
     MeshPatternLibrary();
-    // Stitches rows A = 0 .. rowA - 1 and B = rowA .. rowA + rowB - 1 with
-    // `stitch` and stores the triangles under `key`.
-    template <typename Stitch>
-    void add(uint32_t key, uint32_t rowA, uint32_t rowB, Stitch&& stitch);
 
     std::vector<shader::TsMeshKey> mKeys;
     std::vector<uint32_t> mTriangles;

@@ -47,9 +47,6 @@ public:
 
 private:
     MeshTrianglePatternLibrary();
-    // Stitches rows A = 0 .. rowA - 1 and B = rowA .. rowA + rowB - 1 with
-    // `stitch` and stores the triangles under `key`.
-    template <typename Stitch> void add(uint32_t key, uint32_t rowA, uint32_t rowB, Stitch&& stitch);
     std::vector<glm::uvec4> buildGroups(uint32_t maxTriangles) const;
 
     std::vector<shader::TsMeshKey> mKeys;
