@@ -32,17 +32,9 @@ HulldomainSubdivPass::HulldomainSubdivPass(gpu::Device& device, VkFormat colorFo
                    {VK_SHADER_STAGE_FRAGMENT_BIT, subdiv_frag_spv}};
     desc.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
     desc.patchControlPoints = 1;
-    // Domains are counter-clockwise seen from outside (ptex u, v follow the
-    // face's winding); Camera::projection's Y flip makes them clockwise on
-    // screen. Closed surfaces cull back faces; open ones draw both sides.
-    desc.frontFace = VK_FRONT_FACE_CLOCKWISE;
     desc.colorFormats = {colorFormat};
     desc.depthFormat = depthFormat;
-    for (int twoSided = 0; twoSided < 2; ++twoSided) {
-        desc.cullMode = twoSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-        mPipelines[twoSided] = FillWirePipelines(
-            device, desc, std::string("hulldomain.subdiv.") + (twoSided ? "twoSided" : "closed"), wireframe);
-    }
+    mPipelines = SubdivPipelines(device, desc, "hulldomain.subdiv", wireframe);
 }
 
 void HulldomainSubdivPass::recordDraw(gpu::FrameContext& frame, GpuSubdiv& surface,
@@ -50,8 +42,7 @@ void HulldomainSubdivPass::recordDraw(gpu::FrameContext& frame, GpuSubdiv& surfa
                                       bool wireframe) {
     VkCommandBuffer cmd = frame.cmd();
     gpu::PassScope pass(frame, "subdiv.draw");
-    const int twoSided = surface.closed() ? 0 : 1;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines[twoSided].get(wireframe).handle());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines.get(surface, wireframe).handle());
     std::vector<VkWriteDescriptorSet> writes = surface.levelWrites(uniforms);
     const VkDescriptorBufferInfo frameInfo = frameUniforms.descriptor();
     writes.push_back(bufferWrite(TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &frameInfo));

@@ -7,7 +7,7 @@
 /// whose domain stage evaluates the shared subdiv_eval.glsl at
 /// gl_TessCoord, levels up to 64.
 
-#include "common/FillWirePipelines.h"
+#include "common/SubdivPipelines.h"
 #include "common/GpuSubdiv.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"
@@ -31,7 +31,7 @@ public:
 private:
     gpu::Device* mDevice = nullptr;
     gpu::PipelineLayout mLayout;
-    FillWirePipelines mPipelines[2]; ///< [two-sided]
+    SubdivPipelines mPipelines;
 };
 
 } // namespace tessera::backends

@@ -33,17 +33,9 @@ MeshshaderSubdivPass::MeshshaderSubdivPass(gpu::Device& device, VkFormat colorFo
     desc.stages = {{VK_SHADER_STAGE_TASK_BIT_EXT, meshshader_subdiv_task_spv},
                    {VK_SHADER_STAGE_MESH_BIT_EXT, meshshader_subdiv_mesh_spv},
                    {VK_SHADER_STAGE_FRAGMENT_BIT, subdiv_frag_spv}};
-    // As hulldomain: domains are counter-clockwise seen from outside, and
-    // Camera::projection's Y flip makes them clockwise on screen. Closed
-    // surfaces cull back faces; open ones draw both sides.
-    desc.frontFace = VK_FRONT_FACE_CLOCKWISE;
     desc.colorFormats = {colorFormat};
     desc.depthFormat = depthFormat;
-    for (int twoSided = 0; twoSided < 2; ++twoSided) {
-        desc.cullMode = twoSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-        mPipelines[twoSided] = FillWirePipelines(
-            device, desc, std::string("meshshader.subdiv.") + (twoSided ? "twoSided" : "closed"), wireframe);
-    }
+    mPipelines = SubdivPipelines(device, desc, "meshshader.subdiv", wireframe);
 }
 
 void MeshshaderSubdivPass::recordDraw(gpu::FrameContext& frame, GpuSubdiv& surface,
@@ -51,8 +43,7 @@ void MeshshaderSubdivPass::recordDraw(gpu::FrameContext& frame, GpuSubdiv& surfa
                                       bool wireframe) {
     VkCommandBuffer cmd = frame.cmd();
     gpu::PassScope pass(frame, "subdiv.draw");
-    const int twoSided = surface.closed() ? 0 : 1;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines[twoSided].get(wireframe).handle());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines.get(surface, wireframe).handle());
     std::vector<VkWriteDescriptorSet> writes = surface.levelWrites(uniforms);
     const VkDescriptorBufferInfo frameInfo = frameUniforms.descriptor();
     const auto tables = mTables.descriptors();

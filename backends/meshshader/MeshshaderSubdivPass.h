@@ -7,7 +7,7 @@
 /// evaluates the shared subdiv_eval.glsl at the pattern's points, levels up
 /// to 64 (meshshader_subdiv.task/.mesh).
 
-#include "common/FillWirePipelines.h"
+#include "common/SubdivPipelines.h"
 #include "common/GpuSubdiv.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/PipelineLayout.h"
@@ -32,7 +32,7 @@ public:
 private:
     gpu::Device* mDevice = nullptr;
     gpu::PipelineLayout mLayout;
-    FillWirePipelines mPipelines[2]; ///< [two-sided]
+    SubdivPipelines mPipelines;
     MeshshaderPatternTables mTables;
 };
 

@@ -29,18 +29,10 @@ EmulatedSubdivPass::EmulatedSubdivPass(gpu::Device& device, const std::string& b
     desc.vertexBindings = {{0, sizeof(uint32_t), VK_VERTEX_INPUT_RATE_VERTEX}};
     desc.vertexAttributes = {{0, 0, VK_FORMAT_R32_UINT, 0}};
     // The pattern library lists triangles in the order the hardware emits
-    // them for `ccw` (tessellator::PatternLibrary), so the winding on screen
-    // is hulldomain's: domains counter-clockwise from outside, clockwise on
-    // screen after Camera::projection's Y flip. Closed surfaces cull back
-    // faces, open ones draw both sides, as hulldomain does.
-    desc.frontFace = VK_FRONT_FACE_CLOCKWISE;
+    // them for `ccw` (tessellator::PatternLibrary): hulldomain's winding.
     desc.colorFormats = {colorFormat};
     desc.depthFormat = depthFormat;
-    for (int twoSided = 0; twoSided < 2; ++twoSided) {
-        desc.cullMode = twoSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-        mPipelines[twoSided] =
-            FillWirePipelines(device, desc, backendName + ".subdiv." + (twoSided ? "twoSided" : "closed"), wireframe);
-    }
+    mPipelines = SubdivPipelines(device, desc, backendName + ".subdiv", wireframe);
 }
 
 void EmulatedSubdivPass::record(gpu::FrameContext& frame, GpuSubdiv& surface, const EmulatedDrawSource& source,
@@ -49,8 +41,7 @@ void EmulatedSubdivPass::record(gpu::FrameContext& frame, GpuSubdiv& surface, co
     gpu::PassScope pass(frame, "subdiv.draw");
     if (source.records == VK_NULL_HANDLE || source.capacity == 0) return;
     VkCommandBuffer cmd = frame.cmd();
-    const int twoSided = surface.closed() ? 0 : 1;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines[twoSided].get(wireframe).handle());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines.get(surface, wireframe).handle());
     std::vector<VkWriteDescriptorSet> writes = surface.evalWrites(uniforms);
     const VkDescriptorBufferInfo frameInfo = frameUniforms.descriptor();
     writes.push_back(bufferWrite(TS_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &frameInfo));

@@ -7,7 +7,7 @@
 /// hulldomain's gl_TessCoord and evaluates the shared subdiv_eval.glsl there
 /// exactly as hulldomain's domain stage does; shading is subdiv.frag.
 
-#include "common/FillWirePipelines.h"
+#include "common/SubdivPipelines.h"
 #include "common/EmulatedDrawSource.h"
 #include "common/GpuSubdiv.h"
 #include "tessera/gpu/FrameContext.h"
@@ -36,7 +36,7 @@ public:
 private:
     gpu::Device* mDevice = nullptr;
     gpu::PipelineLayout mLayout;
-    FillWirePipelines mPipelines[2]; ///< [two-sided]
+    SubdivPipelines mPipelines;
 };
 
 } // namespace tessera::backends
