@@ -1,6 +1,8 @@
-// meshshader_crowd.glsl: what a crowd meshlet task workgroup hands its mesh
-// workgroups (one per meshlet that survived its culling), and the tables
-// both stages read (CrowdMeshlet.h).
+// meshshader_crowd.glsl: the middle and far tiers' meshlet culling, one
+// definition for the task stage (meshshader_crowd_meshlet.task) and the
+// compute-built cluster lists (meshshader_crowd_cluster.comp): the tables
+// both read (CrowdMeshlet.h), the per-list push constants, and the test of
+// one (instance, meshlet) item of a list. Needs crowd_common.glsl (TS_CROWD).
 #ifndef MESHSHADER_CROWD_GLSL
 #define MESHSHADER_CROWD_GLSL
 #include "tessera/shaders/CrowdMeshlet.h"
@@ -9,9 +11,45 @@ layout(std430, set = 0, binding = TS_BINDING_CROWD_MESHLETS) readonly buffer Mes
     CrowdMeshlet crowdMeshlets[];
 };
 
+// What a meshlet task workgroup hands its mesh workgroups: one (list entry,
+// meshlet) per meshlet that survived its culling, compacted.
 struct CrowdMeshletPayload {
-    uint entry;                           // index into crowdLists
-    uint meshlets[TS_CROWD_TASK_ITEMS];   // the visible meshlets, compacted
+    uvec2 items[TS_CROWD_TASK_ITEMS];
 };
+
+layout(push_constant) uniform CrowdMeshletDraw {
+    uint countWord;    // the list's instance count in crowdArgs
+    uint listBase;     // the list's first entry in crowdLists
+    uint firstMeshlet; // the mesh's first meshlet
+    uint meshletCount;
+    uint clusterBase;  // cluster lists: the list's region in crowdClusters
+    uint list;         // cluster lists: the list's index
+} draw;
+
+#ifdef MS_CROWD_CULL
+layout(std430, set = 0, binding = TS_BINDING_CROWD_ARGS) readonly buffer ArgsBlock {
+    uint crowdArgs[];
+};
+
+// Item `item` of the list (instance item / meshletCount, meshlet item %
+// meshletCount): whether it exists and may show, and its (list entry,
+// meshlet). The command flattened the items (tsCrowdMeshletCommand), so a
+// workgroup may span instances.
+bool msCrowdMeshletItem(uint item, out uvec2 drawn) {
+    uint k = item / max(draw.meshletCount, 1u);
+    uint m = item - k * draw.meshletCount;
+    drawn = uvec2(draw.listBase + k, draw.firstMeshlet + m);
+    if (k >= crowdArgs[draw.countWord]) return false;
+    CrowdInstance instance = tsCrowdInstance(crowdLists[drawn.x].instance);
+    return tsCrowdMeshletVisible(crowdMeshlets[drawn.y], tsCrowdWorld(instance), max(instance.animation.y, 1e-6),
+                                 uCrowd.lod);
+}
+
+// The item this invocation tests: the workgroups run in rows of
+// TS_CROWD_TASK_ROW (x), TS_CROWD_TASK_ITEMS items each.
+uint msCrowdMeshletItemIndex() {
+    return (gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x) * TS_CROWD_TASK_ITEMS + gl_LocalInvocationIndex;
+}
+#endif
 
 #endif

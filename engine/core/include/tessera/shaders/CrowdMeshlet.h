@@ -14,6 +14,8 @@
 //   TS_BINDING_CROWD_MESHLET_VERTICES (45)  uint: mesh-local vertex index per meshlet vertex
 //   TS_BINDING_CROWD_MESHLET_TRIANGLES (46) uint: three 8-bit meshlet-local indices per triangle
 //   TS_BINDING_CROWD_MESH_ARGS (47)         CrowdMeshCommand per list
+//   TS_BINDING_CROWD_CLUSTERS (48)          uvec2 (list entry, meshlet) per kept meshlet (cluster lists)
+//   TS_BINDING_CROWD_CLUSTER_ARGS (49)      CrowdMeshCommand per list: the mesh-only draw, w its clusters
 #ifndef TESSERA_CROWD_MESHLET_H
 #define TESSERA_CROWD_MESHLET_H
 #include "tessera/shaders/CrowdLod.h"
@@ -21,10 +23,13 @@
 
 #define TS_CROWD_MESHLET_VERTICES 64u
 #define TS_CROWD_MESHLET_TRIANGLES 124u
-/// Meshlets (middle, far) or cage triangles (near) per task workgroup.
+/// Cage triangles (near) or (instance, meshlet) items (middle, far) per
+/// task workgroup.
 #define TS_CROWD_TASK_ITEMS 32u
-/// A list's instances per row of task workgroups (y); rows are z: the
-/// per-dimension limit of vkCmdDrawMeshTasksIndirectEXT is at least 65535.
+/// Workgroups per row of a command (the near tier: a list's instances per
+/// row, y; the meshlet tiers: workgroups per row, x); rows are the next
+/// dimension: the per-dimension limit of vkCmdDrawMeshTasksIndirectEXT is
+/// at least 65535.
 #define TS_CROWD_TASK_ROW 32768u
 
 TS_NAMESPACE_BEGIN
@@ -38,10 +43,11 @@ struct CrowdMeshlet {
 TS_CHECK_SIZE(CrowdMeshlet, 48)
 
 /// One list's task-shader command (16 bytes): xyz is
-/// VkDrawMeshTasksIndirectCommandEXT (task workgroups per instance, the
-/// instances of a row, rows), w the workgroups per instance, fixed at
-/// creation (cage triangle groups for the near tier, meshlet groups for
-/// the middle and far tiers).
+/// VkDrawMeshTasksIndirectCommandEXT, w fixed at creation. The near tier:
+/// (task workgroups per instance, the instances of a row, rows), w the
+/// workgroups per instance (cage triangle groups, tsCrowdMeshCommand); the
+/// middle and far tiers: (workgroups of a row, rows, 1), w the mesh's
+/// meshlets (tsCrowdMeshletCommand).
 struct CrowdMeshCommand {
     uvec4 groups;
 };
@@ -53,6 +59,16 @@ TS_INLINE uvec4 tsCrowdMeshCommand(uint count, uint perInstance) {
     if (count == 0u || perInstance == 0u) return uvec4(0u, 0u, 0u, perInstance);
     return uvec4(perInstance, min(count, TS_CROWD_TASK_ROW), (count + TS_CROWD_TASK_ROW - 1u) / TS_CROWD_TASK_ROW,
                  perInstance);
+}
+
+/// The command of a meshlet tier's list holding `count` instances of a mesh
+/// of `meshlets` meshlets: its (instance, meshlet) items flattened, 32 to a
+/// task workgroup, so a far mesh of two meshlets fills a workgroup with 16
+/// instances rather than leaving 30 of its 32 invocations idle.
+TS_INLINE uvec4 tsCrowdMeshletCommand(uint count, uint meshlets) {
+    const uint groups = (count * meshlets + TS_CROWD_TASK_ITEMS - 1u) / TS_CROWD_TASK_ITEMS;
+    if (groups == 0u) return uvec4(0u, 0u, 0u, meshlets);
+    return uvec4(min(groups, TS_CROWD_TASK_ROW), (groups + TS_CROWD_TASK_ROW - 1u) / TS_CROWD_TASK_ROW, 1u, meshlets);
 }
 
 /// Whether meshlet `m` of an instance placed by `world` (a rotation times
@@ -76,5 +92,7 @@ TS_NAMESPACE_END
 #define TS_BINDING_CROWD_MESHLET_VERTICES 45
 #define TS_BINDING_CROWD_MESHLET_TRIANGLES 46
 #define TS_BINDING_CROWD_MESH_ARGS 47
+#define TS_BINDING_CROWD_CLUSTERS 48
+#define TS_BINDING_CROWD_CLUSTER_ARGS 49
 
 #endif
