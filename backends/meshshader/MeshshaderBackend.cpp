@@ -96,7 +96,7 @@ protected:
     VkBufferUsageFlags crowdWriteUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
     Status attachCrowdResources(GpuCrowd& crowd, backend::CrowdHandle handle,
                                 const backend::CrowdDesc& desc) override {
-        auto resources = MeshshaderCrowdResources::create(*mDevice, crowd, desc, handle.id, mCrowdPass.clusters());
+        auto resources = MeshshaderCrowdResources::create(*mDevice, crowd, desc, handle.id);
         if (!resources) return resources.error();
         crowd.attach(std::move(resources.value()));
         return {};

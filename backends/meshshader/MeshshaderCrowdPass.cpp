@@ -10,14 +10,9 @@
 #include "meshshader_character.mesh_crowd.spv.h"
 #include "meshshader_character.task_crowd.spv.h"
 #include "meshshader_crowd_args.comp.spv.h"
-#include "meshshader_crowd_args.comp_clusters.spv.h"
-#include "meshshader_crowd_cluster.comp.spv.h"
-#include "meshshader_crowd_cluster.mesh.spv.h"
 #include "meshshader_crowd_meshlet.mesh.spv.h"
 #include "meshshader_crowd_meshlet.task.spv.h"
 
-#include <cstdlib>
-#include <string_view>
 #include <vector>
 
 namespace tessera::backends {
@@ -27,30 +22,15 @@ constexpr VkShaderStageFlags kStages =
     VK_SHADER_STAGE_TASK_BIT_EXT | VK_SHADER_STAGE_MESH_BIT_EXT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 
-/// A list's push constants: the list (its count's word, its first entry)
-/// and the mesh (the near tier: first cage index and triangles; the others:
-/// first meshlet and meshlets), and for cluster lists the list's cluster
-/// region and index (meshshader_crowd.glsl).
+/// The task stages' push constants: the list (its count's word, its first
+/// entry) and the mesh (the near tier: first cage index and triangles; the
+/// others: first meshlet and meshlets).
 struct TaskPush {
-    uint32_t countWord = 0, listBase = 0, first = 0, count = 0, clusterBase = 0, list = 0;
+    uint32_t countWord = 0, listBase = 0, first = 0, count = 0;
 };
 
 uint32_t listOf(uint32_t tier, uint32_t creature) {
     return tier * TS_CROWD_MAX_CHARACTERS + creature;
-}
-
-/// Where the meshlet tiers' meshlets are culled: TESSERA_MESHSHADER_MESHLETS
-/// = task or clusters chooses; otherwise each device takes the faster
-/// (docs/CROWD.md, "meshshader: task stage or cluster lists"): a CPU
-/// device (lavapipe) the cluster lists, whose compute pass costs it less
-/// than running task workgroups; a GPU the task stage, which saves the
-/// lists' round trip through memory.
-bool useClusterLists(const gpu::Device& device) {
-    if (const char* choice = std::getenv("TESSERA_MESHSHADER_MESHLETS")) {
-        if (std::string_view(choice) == "clusters") return true;
-        if (std::string_view(choice) == "task") return false;
-    }
-    return device.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
 }
 
 } // namespace
@@ -59,24 +39,10 @@ MeshshaderCrowdPass::MeshshaderCrowdPass(gpu::Device& device, VkFormat colorForm
     : mDevice(&device), mCull(device, "meshshader") {
     mArgsLayout = gpu::PipelineLayout(device,
                                       {{TS_BINDING_CROWD_ARGS, kStorage, VK_SHADER_STAGE_COMPUTE_BIT},
-                                       {TS_BINDING_CROWD_MESH_ARGS, kStorage, VK_SHADER_STAGE_COMPUTE_BIT},
-                                       {TS_BINDING_CROWD_CLUSTER_ARGS, kStorage, VK_SHADER_STAGE_COMPUTE_BIT}},
+                                       {TS_BINDING_CROWD_MESH_ARGS, kStorage, VK_SHADER_STAGE_COMPUTE_BIT}},
                                       0, 0, "meshshader.crowd.meshTaskCommands.layout");
     mArgs = gpu::ComputePipeline(device, mArgsLayout, meshshader_crowd_args_comp_spv,
                                  "meshshader.crowd.meshTaskCommands");
-    mClusters = useClusterLists(device);
-    if (mClusters) {
-        mClusterArgs = gpu::ComputePipeline(device, mArgsLayout, meshshader_crowd_args_comp_clusters_spv,
-                                            "meshshader.crowd.clusterCommands");
-        mClusterLayout = CrowdDescriptors::layout(
-            device, CrowdDescriptors::Mode::Storage, VK_SHADER_STAGE_COMPUTE_BIT, "meshshader.crowd.clusterLayout",
-            {{TS_BINDING_CROWD_MESHLETS, kStorage, VK_SHADER_STAGE_COMPUTE_BIT},
-             {TS_BINDING_CROWD_CLUSTERS, kStorage, VK_SHADER_STAGE_COMPUTE_BIT},
-             {TS_BINDING_CROWD_CLUSTER_ARGS, kStorage, VK_SHADER_STAGE_COMPUTE_BIT}},
-            sizeof(TaskPush), VK_SHADER_STAGE_COMPUTE_BIT);
-        mClusterCull = gpu::ComputePipeline(device, mClusterLayout, meshshader_crowd_cluster_comp_spv,
-                                            "meshshader.crowd.clusterCull");
-    }
 
     const tessellator::MeshTrianglePatternLibrary& library =
         tessellator::MeshTrianglePatternLibrary::uniformFractionalOdd();
@@ -89,10 +55,8 @@ MeshshaderCrowdPass::MeshshaderCrowdPass(gpu::Device& device, VkFormat colorForm
                                         {TS_BINDING_MESH_GROUPS, kStorage, kStages},
                                         {TS_BINDING_CROWD_MESHLETS, kStorage, kStages},
                                         {TS_BINDING_CROWD_MESHLET_VERTICES, kStorage, kStages},
-                                        {TS_BINDING_CROWD_MESHLET_TRIANGLES, kStorage, kStages},
-                                        {TS_BINDING_CROWD_CLUSTERS, kStorage, kStages},
-                                        {TS_BINDING_CROWD_CLUSTER_ARGS, kStorage, kStages}},
-                                       sizeof(TaskPush), VK_SHADER_STAGE_TASK_BIT_EXT | VK_SHADER_STAGE_MESH_BIT_EXT);
+                                        {TS_BINDING_CROWD_MESHLET_TRIANGLES, kStorage, kStages}},
+                                       sizeof(TaskPush), VK_SHADER_STAGE_TASK_BIT_EXT);
 
     gpu::GraphicsPipelineDesc desc;
     desc.layout = &mLayout;
@@ -115,11 +79,6 @@ MeshshaderCrowdPass::MeshshaderCrowdPass(gpu::Device& device, VkFormat colorForm
     desc.stages = {{VK_SHADER_STAGE_TASK_BIT_EXT, meshshader_crowd_meshlet_task_spv},
                    {VK_SHADER_STAGE_MESH_BIT_EXT, meshshader_crowd_meshlet_mesh_spv},
                    {VK_SHADER_STAGE_FRAGMENT_BIT, character_frag_crowd_spv}};
-    if (mClusters) {
-        desc.name = "meshshader.crowd.clusters";
-        desc.stages = {{VK_SHADER_STAGE_MESH_BIT_EXT, meshshader_crowd_cluster_mesh_spv},
-                       {VK_SHADER_STAGE_FRAGMENT_BIT, character_frag_crowd_spv}};
-    }
     mMeshlets = gpu::Pipeline(device, desc);
 }
 
@@ -127,73 +86,19 @@ void MeshshaderCrowdPass::recordCommands(VkCommandBuffer cmd, GpuCrowd& crowd, M
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mArgs.handle());
     const VkDescriptorBufferInfo args{crowd.args().handle(), 0, VK_WHOLE_SIZE};
     const VkDescriptorBufferInfo meshArgs{resources.meshArgs().handle(), 0, VK_WHOLE_SIZE};
-    const VkDescriptorBufferInfo clusterArgs{resources.clusterArgs().handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet writes[3] = {bufferWrite(TS_BINDING_CROWD_ARGS, kStorage, &args),
-                                            bufferWrite(TS_BINDING_CROWD_MESH_ARGS, kStorage, &meshArgs),
-                                            bufferWrite(TS_BINDING_CROWD_CLUSTER_ARGS, kStorage, &clusterArgs)};
-    mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mArgsLayout.handle(), 0, 3, writes);
+    const VkWriteDescriptorSet writes[2] = {bufferWrite(TS_BINDING_CROWD_ARGS, kStorage, &args),
+                                            bufferWrite(TS_BINDING_CROWD_MESH_ARGS, kStorage, &meshArgs)};
+    mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mArgsLayout.handle(), 0, 2, writes);
     vkCmdDispatch(cmd, 1, 1, 1);
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                       VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
-                           VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-}
-
-void MeshshaderCrowdPass::recordClusters(VkCommandBuffer cmd, GpuCrowd& crowd, MeshshaderCrowdResources& resources,
-                                         CrowdDescriptors& descriptors) {
-    // Each meshlet tier's list: its items culled as the task stage would,
-    // dispatched by the list's own task command (same xyz), into the list's
-    // cluster region.
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mClusterCull.handle());
-    const VkDescriptorBufferInfo meshlets{resources.meshletBuffer().handle(), 0, VK_WHOLE_SIZE};
-    const VkDescriptorBufferInfo clusters{resources.clusters().handle(), 0, VK_WHOLE_SIZE};
-    const VkDescriptorBufferInfo clusterArgs{resources.clusterArgs().handle(), 0, VK_WHOLE_SIZE};
-    const auto shared = descriptors.writes(0);
-    std::vector<VkWriteDescriptorSet> writes(shared.begin(), shared.end());
-    writes.push_back(bufferWrite(TS_BINDING_CROWD_MESHLETS, kStorage, &meshlets));
-    writes.push_back(bufferWrite(TS_BINDING_CROWD_CLUSTERS, kStorage, &clusters));
-    writes.push_back(bufferWrite(TS_BINDING_CROWD_CLUSTER_ARGS, kStorage, &clusterArgs));
-    mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mClusterLayout.handle(), 0,
-                                       uint32_t(writes.size()), writes.data());
-    const uint32_t creatures = uint32_t(crowd.creatures().size());
-    for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier)
-        for (uint32_t c = 0; c < creatures; ++c) {
-            const uint32_t list = listOf(tier, c);
-            const MeshshaderCrowdResources::MeshletRange range = resources.meshlets(tier, c);
-            const TaskPush push{list * TS_CROWD_ARG_DRAW_WORDS + 1,
-                                shader::tsCrowdListBase(tier, c, creatures, crowd.maxInstances()),
-                                range.first,
-                                range.count,
-                                resources.clusterBase(list),
-                                list};
-            vkCmdPushConstants(cmd, mClusterLayout.handle(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-            vkCmdDispatchIndirect(cmd, resources.meshArgs().handle(),
-                                  VkDeviceSize(list) * sizeof(shader::CrowdMeshCommand));
-        }
-    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                       VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mClusterArgs.handle());
-    const VkDescriptorBufferInfo args{crowd.args().handle(), 0, VK_WHOLE_SIZE};
-    const VkDescriptorBufferInfo meshArgs{resources.meshArgs().handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet argWrites[3] = {bufferWrite(TS_BINDING_CROWD_ARGS, kStorage, &args),
-                                               bufferWrite(TS_BINDING_CROWD_MESH_ARGS, kStorage, &meshArgs),
-                                               bufferWrite(TS_BINDING_CROWD_CLUSTER_ARGS, kStorage, &clusterArgs)};
-    mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, mArgsLayout.handle(), 0, 3, argWrites);
-    vkCmdDispatch(cmd, 1, 1, 1);
-    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_MESH_SHADER_BIT_EXT,
-                       VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
 }
 
 void MeshshaderCrowdPass::recordCompute(gpu::FrameContext& frame, GpuCrowd& crowd,
                                         MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors,
                                         uint32_t instanceCount) {
     mCull.record(frame, crowd, descriptors, instanceCount, VK_PIPELINE_STAGE_2_MESH_SHADER_BIT_EXT,
-                 [&](VkCommandBuffer cmd) {
-                     recordCommands(cmd, crowd, resources);
-                     if (mClusters) recordClusters(cmd, crowd, resources, descriptors);
-                 });
+                 [&](VkCommandBuffer cmd) { recordCommands(cmd, crowd, resources); });
 }
 
 void MeshshaderCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
@@ -206,17 +111,13 @@ void MeshshaderCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
     const VkDescriptorBufferInfo meshlets{resources.meshletBuffer().handle(), 0, VK_WHOLE_SIZE};
     const VkDescriptorBufferInfo meshletVertices{resources.meshletVertices().handle(), 0, VK_WHOLE_SIZE};
     const VkDescriptorBufferInfo meshletTriangles{resources.meshletTriangles().handle(), 0, VK_WHOLE_SIZE};
-    const VkDescriptorBufferInfo clusters{resources.clusters().handle(), 0, VK_WHOLE_SIZE};
-    const VkDescriptorBufferInfo clusterArgs{resources.clusterArgs().handle(), 0, VK_WHOLE_SIZE};
-    const VkWriteDescriptorSet extra[9] = {texelWrite(TS_BINDING_CROWD_INDICES, &indices),
+    const VkWriteDescriptorSet extra[7] = {texelWrite(TS_BINDING_CROWD_INDICES, &indices),
                                            bufferWrite(TS_BINDING_MESH_GROUPS, kStorage, &groups),
                                            bufferWrite(TS_BINDING_MESH_KEYS, kStorage, &tables[0]),
                                            bufferWrite(TS_BINDING_MESH_TRIANGLES, kStorage, &tables[1]),
                                            bufferWrite(TS_BINDING_CROWD_MESHLETS, kStorage, &meshlets),
                                            bufferWrite(TS_BINDING_CROWD_MESHLET_VERTICES, kStorage, &meshletVertices),
-                                           bufferWrite(TS_BINDING_CROWD_MESHLET_TRIANGLES, kStorage, &meshletTriangles),
-                                           bufferWrite(TS_BINDING_CROWD_CLUSTER_ARGS, kStorage, &clusterArgs),
-                                           bufferWrite(TS_BINDING_CROWD_CLUSTERS, kStorage, &clusters)};
+                                           bufferWrite(TS_BINDING_CROWD_MESHLET_TRIANGLES, kStorage, &meshletTriangles)};
     std::vector<VkWriteDescriptorSet> writes;
     static const char* const kPassNames[TS_LOD_TIERS] = {"crowd.near", "crowd.middle", "crowd.far"};
     for (uint32_t tier = TS_LOD_NEAR; tier <= TS_LOD_FAR; ++tier) {
@@ -225,8 +126,7 @@ void MeshshaderCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
         for (uint32_t c = 0; c < creatures; ++c) {
             const auto shared = descriptors.writes(c);
             writes.assign(shared.begin(), shared.end());
-            // Without cluster lists there is no cluster buffer to name.
-            writes.insert(writes.end(), std::begin(extra), std::end(extra) - (mClusters ? 0 : 1));
+            writes.insert(writes.end(), std::begin(extra), std::end(extra));
             mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0,
                                                uint32_t(writes.size()), writes.data());
             const uint32_t list = listOf(tier, c);
@@ -240,14 +140,9 @@ void MeshshaderCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
                 const MeshshaderCrowdResources::MeshletRange range = resources.meshlets(tier, c);
                 push.first = range.first;
                 push.count = range.count;
-                push.clusterBase = resources.clusterBase(list);
-                push.list = list;
             }
-            vkCmdPushConstants(cmd, mLayout.handle(), VK_SHADER_STAGE_TASK_BIT_EXT | VK_SHADER_STAGE_MESH_BIT_EXT, 0,
-                               sizeof push, &push);
-            gpu::Buffer& commands =
-                tier != TS_LOD_NEAR && mClusters ? resources.clusterArgs() : resources.meshArgs();
-            mDevice->fn().cmdDrawMeshTasksIndirect(cmd, commands.handle(),
+            vkCmdPushConstants(cmd, mLayout.handle(), VK_SHADER_STAGE_TASK_BIT_EXT, 0, sizeof push, &push);
+            mDevice->fn().cmdDrawMeshTasksIndirect(cmd, resources.meshArgs().handle(),
                                                    VkDeviceSize(list) * sizeof(shader::CrowdMeshCommand), 1,
                                                    sizeof(shader::CrowdMeshCommand));
         }

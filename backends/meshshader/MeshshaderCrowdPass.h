@@ -37,23 +37,14 @@ public:
 
     /// Bytes of the near tier's pattern tables.
     uint64_t tableBytes() const { return mTables.bytes(); }
-    /// Whether the meshlet tiers draw from compute-built cluster lists
-    /// (mesh stage only) rather than culling in the task stage.
-    bool clusters() const { return mClusters; }
 
 private:
     void recordCommands(VkCommandBuffer cmd, GpuCrowd& crowd, MeshshaderCrowdResources& resources);
-    void recordClusters(VkCommandBuffer cmd, GpuCrowd& crowd, MeshshaderCrowdResources& resources,
-                        CrowdDescriptors& descriptors);
 
     gpu::Device* mDevice = nullptr;
     ComputeCrowdCullPass mCull;
     gpu::PipelineLayout mArgsLayout;
     gpu::ComputePipeline mArgs;
-    bool mClusters = false;
-    gpu::ComputePipeline mClusterArgs;
-    gpu::PipelineLayout mClusterLayout;
-    gpu::ComputePipeline mClusterCull;
     gpu::PipelineLayout mLayout;
     gpu::Pipeline mNear;
     gpu::Pipeline mMeshlets;

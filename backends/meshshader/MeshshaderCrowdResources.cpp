@@ -128,7 +128,7 @@ uint32_t groupsOf(uint32_t items) {
 Result<std::unique_ptr<MeshshaderCrowdResources>> MeshshaderCrowdResources::create(gpu::Device& device,
                                                                                    GpuCrowd& crowd,
                                                                                    const backend::CrowdDesc& desc,
-                                                                                   uint32_t id, bool clusters) {
+                                                                                   uint32_t id) {
     std::unique_ptr<MeshshaderCrowdResources> r(new MeshshaderCrowdResources());
     MeshletTables tables;
     const character::BakedAnimation& baked = *desc.animation;
@@ -159,15 +159,10 @@ Result<std::unique_ptr<MeshshaderCrowdResources>> MeshshaderCrowdResources::crea
     // 32 cage triangles per instance, the others' items are their mesh's
     // meshlets per instance (tsCrowdMeshletCommand).
     std::vector<shader::CrowdMeshCommand> args(TS_CROWD_LISTS, shader::CrowdMeshCommand{glm::uvec4(0)});
-    uint64_t clusterCount = 0;
     for (uint32_t c = 0; c < crowd.creatures().size(); ++c) {
         args[TS_LOD_NEAR * TS_CROWD_MAX_CHARACTERS + c].groups.w = groupsOf(crowd.creatures()[c].cageTriangles);
-        for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier) {
-            const uint32_t list = tier * TS_CROWD_MAX_CHARACTERS + c;
-            args[list].groups.w = r->meshlets(tier, c).count;
-            r->mClusterBases[list] = uint32_t(clusterCount);
-            if (clusters) clusterCount += uint64_t(crowd.maxInstances()) * r->meshlets(tier, c).count;
-        }
+        for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier)
+            args[tier * TS_CROWD_MAX_CHARACTERS + c].groups.w = r->meshlets(tier, c).count;
     }
 
     const std::string name = "meshshader.crowd[" + std::to_string(id) + "]";
@@ -185,12 +180,6 @@ Result<std::unique_ptr<MeshshaderCrowdResources>> MeshshaderCrowdResources::crea
                            storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
                            name + ".meshTaskCommands");
     r->mArgs.upload(std::span<const shader::CrowdMeshCommand>(args));
-    r->mClusterArgs = gpu::Buffer(device, args.size() * sizeof(shader::CrowdMeshCommand),
-                                  storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
-                                  name + ".clusterCommands");
-    if (clusters)
-        r->mClusters = gpu::Buffer(device, std::max<uint64_t>(clusterCount, 1) * sizeof(glm::uvec2), storage,
-                                   gpu::MemoryUsage::GpuOnly, name + ".clusters");
     return r;
 }
 
@@ -199,8 +188,7 @@ MeshshaderCrowdResources::MeshletRange MeshshaderCrowdResources::meshlets(uint32
 }
 
 uint64_t MeshshaderCrowdResources::bytes() const {
-    return mMeshlets.size() + mVertices.size() + mTriangles.size() + mArgs.size() + mClusterArgs.size() +
-           mClusters.size();
+    return mMeshlets.size() + mVertices.size() + mTriangles.size() + mArgs.size();
 }
 
 } // namespace tessera::backends

@@ -27,12 +27,9 @@ public:
     };
 
     /// Builds the meshlets of every creature of `crowd` from `desc` (the
-    /// meshes and clips the crowd was made from), named after crowd `id`;
-    /// with `clusters`, the cluster lists' regions too (every instance of
-    /// a meshlet tier's list with all its meshlets kept).
+    /// meshes and clips the crowd was made from), named after crowd `id`.
     static Result<std::unique_ptr<MeshshaderCrowdResources>> create(gpu::Device& device, GpuCrowd& crowd,
-                                                                    const backend::CrowdDesc& desc, uint32_t id,
-                                                                    bool clusters);
+                                                                    const backend::CrowdDesc& desc, uint32_t id);
 
     /// Creature `creature`'s meshlets of tier `tier` (TS_LOD_MIDDLE: its
     /// cage, TS_LOD_FAR: its far mesh).
@@ -46,20 +43,13 @@ public:
     gpu::Buffer& meshletTriangles() { return mTriangles; }
     /// A CrowdMeshCommand per list (tier * TS_CROWD_MAX_CHARACTERS + creature).
     gpu::Buffer& meshArgs() { return mArgs; }
-    /// Cluster lists: a CrowdMeshCommand per list (the mesh-only draw, w its
-    /// clusters), and the (list entry, meshlet) of every kept meshlet, each
-    /// list's from clusterBase(list).
-    gpu::Buffer& clusterArgs() { return mClusterArgs; }
-    gpu::Buffer& clusters() { return mClusters; }
-    uint32_t clusterBase(uint32_t list) const { return mClusterBases[list]; }
 
     uint64_t bytes() const override;
 
 private:
     std::vector<std::array<MeshletRange, 2>> mRanges; ///< per creature: cage, far mesh
     uint32_t mMeshletCount = 0, mConed = 0;
-    std::array<uint32_t, TS_CROWD_LISTS> mClusterBases{};
-    gpu::Buffer mMeshlets, mVertices, mTriangles, mArgs, mClusterArgs, mClusters;
+    gpu::Buffer mMeshlets, mVertices, mTriangles, mArgs;
 };
 
 } // namespace tessera::backends

@@ -79,16 +79,14 @@ struct DemoShot {
 };
 
 /// Runs the demo with `args` plus --validation and --screenshot `screenshot`
-/// (an old file of that name is removed first, so a stale image never passes),
-/// after the shell assignments `environment`.
-inline DemoShot runDemoShot(std::vector<std::string> args, const std::filesystem::path& screenshot,
-                            const std::string& environment = {}) {
+/// (an old file of that name is removed first, so a stale image never passes).
+inline DemoShot runDemoShot(std::vector<std::string> args, const std::filesystem::path& screenshot) {
     DemoShot shot;
     shot.screenshot = screenshot.string();
     std::filesystem::remove(screenshot);
     args.insert(args.end(), {"--validation", "--screenshot", shot.screenshot});
-    shot.command = environment + demoCommandLine(args);
-    shot.result = runDemo(args, environment);
+    shot.command = demoCommandLine(args);
+    shot.result = runDemo(args);
     if (shot.result.exitCode != 0) return shot;
     auto image = readPng(screenshot);
     if (image)

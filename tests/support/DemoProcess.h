@@ -45,15 +45,14 @@ inline ProcessResult runProgram(const std::string& program, const std::vector<st
 }
 
 #ifdef TESSERA_DEMO_EXE
-/// Runs the demo with `args`, after the shell assignments `environment`
-/// (e.g. "NAME=value ").
-inline ProcessResult runDemo(const std::vector<std::string>& args, const std::string& environment = {}) {
+/// Runs the demo with `args`.
+inline ProcessResult runDemo(const std::vector<std::string>& args) {
     // Under ./tessera test --sanitize the demo still runs with ASan and UBSan,
     // but without leak checking: the Vulkan loader unloads the driver before
     // exit, so the driver's own process-lifetime allocations show up as leaks
     // from "<unknown module>" that no suppression can name. Leak checking stays
     // on for the unit tests, which cover the engine without a driver.
-    return runProgram(TESSERA_DEMO_EXE, args, environment + "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" ");
+    return runProgram(TESSERA_DEMO_EXE, args, "ASAN_OPTIONS=\"${ASAN_OPTIONS:-}:detect_leaks=0\" ");
 }
 #endif
 

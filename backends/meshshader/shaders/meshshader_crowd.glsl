@@ -1,8 +1,8 @@
-// meshshader_crowd.glsl: the middle and far tiers' meshlet culling, one
-// definition for the task stage (meshshader_crowd_meshlet.task) and the
-// compute-built cluster lists (meshshader_crowd_cluster.comp): the tables
-// both read (CrowdMeshlet.h), the per-list push constants, and the test of
-// one (instance, meshlet) item of a list. Needs crowd_common.glsl (TS_CROWD).
+// meshshader_crowd.glsl: the middle and far tiers' meshlets: the tables the
+// task and mesh stages read (CrowdMeshlet.h), what a task workgroup hands
+// its mesh workgroups, and (MS_CROWD_CULL, the task stage) the per-list push
+// constants and the test of one (instance, meshlet) item of a list. Needs
+// crowd_common.glsl (TS_CROWD).
 #ifndef MESHSHADER_CROWD_GLSL
 #define MESHSHADER_CROWD_GLSL
 #include "tessera/shaders/CrowdMeshlet.h"
@@ -17,16 +17,13 @@ struct CrowdMeshletPayload {
     uvec2 items[TS_CROWD_TASK_ITEMS];
 };
 
+#ifdef MS_CROWD_CULL
 layout(push_constant) uniform CrowdMeshletDraw {
     uint countWord;    // the list's instance count in crowdArgs
     uint listBase;     // the list's first entry in crowdLists
     uint firstMeshlet; // the mesh's first meshlet
     uint meshletCount;
-    uint clusterBase;  // cluster lists: the list's region in crowdClusters
-    uint list;         // cluster lists: the list's index
 } draw;
-
-#ifdef MS_CROWD_CULL
 layout(std430, set = 0, binding = TS_BINDING_CROWD_ARGS) readonly buffer ArgsBlock {
     uint crowdArgs[];
 };

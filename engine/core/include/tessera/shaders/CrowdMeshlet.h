@@ -14,8 +14,6 @@
 //   TS_BINDING_CROWD_MESHLET_VERTICES (45)  uint: mesh-local vertex index per meshlet vertex
 //   TS_BINDING_CROWD_MESHLET_TRIANGLES (46) uint: three 8-bit meshlet-local indices per triangle
 //   TS_BINDING_CROWD_MESH_ARGS (47)         CrowdMeshCommand per list
-//   TS_BINDING_CROWD_CLUSTERS (48)          uvec2 (list entry, meshlet) per kept meshlet (cluster lists)
-//   TS_BINDING_CROWD_CLUSTER_ARGS (49)      CrowdMeshCommand per list: the mesh-only draw, w its clusters
 #ifndef TESSERA_CROWD_MESHLET_H
 #define TESSERA_CROWD_MESHLET_H
 #include "tessera/shaders/CrowdLod.h"
@@ -92,7 +90,5 @@ TS_NAMESPACE_END
 #define TS_BINDING_CROWD_MESHLET_VERTICES 45
 #define TS_BINDING_CROWD_MESHLET_TRIANGLES 46
 #define TS_BINDING_CROWD_MESH_ARGS 47
-#define TS_BINDING_CROWD_CLUSTERS 48
-#define TS_BINDING_CROWD_CLUSTER_ARGS 49
 
 #endif
