@@ -6,6 +6,7 @@
 #include "tessera/scene/Camera.h"
 #include "tessera/scene/CascadeSplits.h"
 #include "tessera/scene/ShadowCascadeFit.h"
+#include "tessera/scene/ShadowCascadeUniforms.h"
 
 #include <array>
 #include <cmath>
@@ -196,4 +197,29 @@ TEST(SceneShadowCascadeFit, SunViewLooksAlongTheSunEvenAtTheZenith) {
         EXPECT_NEAR(towards.z, 1.0f, 1e-5f);
         for (int c = 0; c < 3; ++c) EXPECT_FALSE(std::isnan(view[c][0]));
     }
+}
+
+TEST(SceneShadowCascadeUniforms, PacksTheCascadesAndSelectsLikeTheFit) {
+    ShadowCascadeFit::Settings settings;
+    settings.cascadeCount = 3;
+    const ShadowCascadeFit fit(settings);
+    const std::vector<ShadowCascade> cascades = fit.fit(makeCamera({10.0f, 20.0f, 30.0f}, 45.0f, -10.0f), kLowSun);
+    const tessera::shader::ShadowCascadeUniforms u = tessera::scene::buildShadowCascadeUniforms(cascades, 2048);
+    EXPECT_EQ(u.params.x, 3.0f);
+    EXPECT_EQ(u.params.y, 1.0f / 2048.0f);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(u.viewProjection[i], cascades[size_t(i)].viewProjection);
+        EXPECT_EQ(u.farDistances[i], cascades[size_t(i)].farDistance);
+        EXPECT_EQ(u.texelSizes[i], cascades[size_t(i)].texelSize);
+        EXPECT_EQ(u.depthRanges[i], cascades[size_t(i)].depthRange);
+    }
+    // The selection the shaders run (ShadowCascades.h) is the fit's.
+    for (float depth = 0.0f; depth < 320.0f; depth += 0.37f) {
+        EXPECT_EQ(tessera::shader::tsShadowCascadeIndex(u.farDistances, 3u, depth),
+                  ShadowCascadeFit::cascadeIndex(cascades, depth))
+            << "at " << depth << " m";
+    }
+    const tessera::shader::ShadowCascadeUniforms none = tessera::scene::buildShadowCascadeUniforms({}, 1024);
+    EXPECT_EQ(none.params.x, 0.0f);
+    EXPECT_EQ(tessera::shader::tsShadowCascadeIndex(none.farDistances, 0u, 1.0f), 0u);
 }
