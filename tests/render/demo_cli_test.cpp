@@ -67,6 +67,16 @@ TEST(DemoCli, BadTerrainFlagsFailClearly) {
     expectUsageError({"--device-memory-cap", "lots"}, "--device-memory-cap expects a whole number");
 }
 
+TEST(DemoCli, ShadowsFlagIsCheckedAgainstTheBackend) {
+    expectUsageError({"--shadows", "soft"}, "--shadows expects auto, blob or cascaded");
+    // Blob shadows are every backend's; cascaded ones only where drawn.
+    expectCleanFailure({"--shadows", "cascaded", "--backend", "r2vb", "--scene", "terrain", "--frames", "1"},
+                       "--shadows cascaded: backend r2vb draws no cascaded shadow maps");
+    auto run = runDemo({"--shadows", "blob", "--backend", "r2vb", "--scene", "terrain", "--frames", "1", "--width",
+                        "64", "--height", "36"});
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+}
+
 TEST(DemoCli, BadHeightMapNamesTheFile) {
     const std::string bogus = std::string(TESSERA_TEST_OUTPUT_DIR) + "/not_a_png.png";
     std::ofstream(bogus) << "definitely not a PNG";

@@ -118,7 +118,12 @@ void BasicTerrainBackend::beginFrame(const backend::FrameInfo& frame) {
     const bool full = frame.look == backend::Look::Full && !frame.wireframe;
     mDeferTerrain = full && (frame.terrainShading == backend::TerrainShading::Deferred ||
                              (frame.terrainShading == backend::TerrainShading::Auto && mDeferOnAuto));
-    mFrameUniforms = mFrame->pushUniform(buildFrameUniforms(frame, mDeferTerrain));
+    const bool cascadedAsked = frame.shadows == backend::Shadows::Cascaded ||
+                               (frame.shadows == backend::Shadows::Auto && mCascadedOnAuto);
+    mCascadedShadows = full && cascadedAsked && capabilities(nullptr).cascadedShadows && !frame.shadowCascades.empty();
+    // Cascaded shadows replace the blobs: no mask is drawn, none is read.
+    if (mCascadedShadows) mFrameInfo.shadowCasters = {};
+    mFrameUniforms = mFrame->pushUniform(buildFrameUniforms(mFrameInfo, mDeferTerrain));
     mMainPassOpen = false;
     mMainPassStarted = false;
     mResolveTerrain = nullptr;
@@ -169,8 +174,8 @@ void BasicTerrainBackend::drawTerrain(backend::TerrainHandle handle, const backe
     // current in the plain look too, since every terrain layout binds it.
     suspendMainPass();
     mSunPass.update(*mFrame, *terrain, glm::normalize(mFrameInfo.sunDirection));
-    // The characters' shadows on it, from where they stand this frame.
-    if (mFrameInfo.look == backend::Look::Full)
+    // The characters' blob shadows on it, from where they stand this frame.
+    if (mFrameInfo.look == backend::Look::Full && !mCascadedShadows)
         mShadowPass.record(*mFrame, mFrameInfo.shadowCasters, mFrameInfo.shadowRegion, mFrameInfo.sunDirection);
     // One terrain per frame is resolved (its pixels carry no terrain id);
     // from a second one on, terrains are shaded forward.

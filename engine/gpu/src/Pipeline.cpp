@@ -67,6 +67,9 @@ Pipeline::Pipeline(Device& device, const GraphicsPipelineDesc& desc) {
     raster.cullMode = desc.cullMode;
     raster.frontFace = desc.frontFace;
     raster.lineWidth = 1.0f;
+    raster.depthBiasEnable = desc.depthBiasConstant != 0.0f || desc.depthBiasSlope != 0.0f;
+    raster.depthBiasConstantFactor = desc.depthBiasConstant;
+    raster.depthBiasSlopeFactor = desc.depthBiasSlope;
 
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;

@@ -17,4 +17,19 @@ Sampler::Sampler(Device& device, VkFilter filter, VkSamplerAddressMode address, 
     mSampler = {device, sampler, name};
 }
 
+Sampler::Sampler(Device& device, VkFilter filter, VkCompareOp compare, std::string name) {
+    VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    info.magFilter = filter;
+    info.minFilter = filter;
+    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+    info.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
+    info.compareEnable = VK_TRUE;
+    info.compareOp = compare;
+    info.maxLod = 0.0f;
+    VkSampler sampler = VK_NULL_HANDLE;
+    TESSERA_VK_CHECK(vkCreateSampler(device.handle(), &info, nullptr, &sampler));
+    mSampler = {device, sampler, name};
+}
+
 } // namespace tessera::gpu

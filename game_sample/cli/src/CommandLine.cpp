@@ -85,6 +85,10 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
         o.terrainShading = t.terrainShading == "forward"    ? backend::TerrainShading::Forward
                            : t.terrainShading == "deferred" ? backend::TerrainShading::Deferred
                                                             : backend::TerrainShading::Auto;
+    if (given("--shadows"))
+        o.shadows = t.shadows == "blob"       ? backend::Shadows::Blob
+                    : t.shadows == "cascaded" ? backend::Shadows::Cascaded
+                                              : backend::Shadows::Auto;
     if (given("--sculpt")) o.subdiv.sculpt = t.sculpt == "raise" ? 1 : -1;
     if (given("--terrain-mode")) o.terrainMode = terrain::parseTerrainMode(t.terrainMode);
     if (given("--tess-metric")) o.tessellation.metric = *terrain::parseTessMetric(t.tessMetric);

@@ -116,6 +116,10 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
            "where the full look shades the terrain: auto (default: deferred where the backend resolves in compute "
            "on a GPU, i.e. hulldomain; forward on r2vb, streamout and lavapipe) | "
            "forward (in its fragments) | deferred (once per pixel after the main pass; docs/LOOKS.md)");
+    choice("--shadows", t.shadows, {"auto", "blob", "cascaded"}, "S",
+           "the characters' shadows in the full look: auto (default: the backend's cheaper for the device) | "
+           "blob (a soft ellipse per character on the terrain, the cheapest) | cascaded (cascaded shadow maps: "
+           "characters shadow the terrain and each other, where the backend draws them; docs/LOOKS.md)");
     text("--sun", t.sun, "az,el",
          "the sun's azimuth (degrees from +X towards +Z) and elevation (1 to 90 degrees); default 36.9,58 "
          "(shadows, sky and fog follow it)");

@@ -37,6 +37,7 @@ constexpr std::array kSettingFlags = std::to_array<SettingFlag>({
     {"overlay", "--overlay"},
     {"scene", "--scene"},
     {"screenshot", "--screenshot"},
+    {"shadows", "--shadows"},
     {"subdivision benchmark", "--bench subdiv"},
     {"subdivision level", "--subdiv-level"},
     {"terrain benchmark", "--bench terrain"},

@@ -5,14 +5,14 @@
 namespace tessera::runtime::setting {
 
 std::span<const char* const> all() {
-    static constexpr std::array<const char*, 33> kAll = {
+    static constexpr std::array<const char*, 34> kAll = {
         kBackend,        kDevice,          kListBackends,     kDeviceMemoryCap,   kWireframe,
         kWindow,         kOverlay,         kFrameSize,        kRenderDocFrame,    kScreenshot,
         kRecord,         kHeightDump,      kCrowdTiers,       kHeightMap,         kScene,
         kCamera,         kModels,          kCreatures,        kAgents,            kAgentsDrawn,
         kTerrainMode,    kTessLevel,       kTessMax,          kCharacterLevel,    kCharacterSurface,
         kSubdivLevel,    kTerrainBenchmark, kCharacterBenchmark, kSubdivBenchmark, kCrowdBenchmark, kCrowdSimBenchmark,
-        kBenchOutput,    kTraceDirectory};
+        kBenchOutput,    kTraceDirectory,  kShadows};
     return kAll;
 }
 

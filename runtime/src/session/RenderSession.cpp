@@ -69,6 +69,11 @@ Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& opti
     if (!selected) return selected.error();
     s.selected = std::move(selected.value());
     log::info("backend " + session->capabilities().name + " on " + session->deviceName());
+    // Asked for by name, cascaded shadows are refused where the backend has
+    // none; a backend switched to at run time that lacks them draws blobs.
+    if (options.shadows == backend::Shadows::Cascaded && !session->capabilities().cascadedShadows)
+        return failSetting(setting::kShadows, " cascaded: backend ", session->capabilities().name,
+                           " draws no cascaded shadow maps (blob shadows only)");
     if (const gpu::Device* device = s.selected->device.get()) warnWhatDegrades(options, *device, *s.reporter);
     if (s.renderDoc && !s.selected->instance) {
         s.reporter->warning(failSetting(setting::kRenderDocFrame, ": backend ", session->capabilities().name,
@@ -84,6 +89,7 @@ Result<std::unique_ptr<RenderSession>> RenderSession::create(const Options& opti
     s.height = options.height.value_or(kDefaultHeight);
     s.look = options.look;
     s.terrainShading = options.terrainShading;
+    s.shadows = options.shadows;
     s.sunDirection = options.sunDirection;
     if (Status ok = s.openTarget(options.window); !ok) return ok.error();
     // The detail textures are content like the height map: a missing or

@@ -8,6 +8,7 @@
 #include "tessera/core/Log.h"
 #include "tessera/profiler/CpuScope.h"
 #include "tessera/profiler/Profiler.h"
+#include "tessera/scene/ShadowCascadeFit.h"
 
 namespace tessera::runtime {
 namespace {
@@ -49,6 +50,8 @@ backend::FrameInfo RenderSession::Impl::frameInfo(uint32_t index, const scene::C
     }
     info.look = look;
     info.terrainShading = terrainShading;
+    info.shadows = shadows;
+    info.shadowCascades = shadowCascades;
     info.sunDirection = sunDirection;
     return info;
 }
@@ -76,6 +79,10 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
         if (s.terrainVisible) s.terrain->cull(camera.frustum(), camera.position(), s.visible);
     }
     const std::vector<terrain::CraterSplat> splats = s.terrain->takePendingSplats();
+    // The cascades follow the view; fitted only where a backend may draw them.
+    s.shadowCascades.clear();
+    if (s.look == backend::Look::Full && s.shadows != backend::Shadows::Blob && capabilities().cascadedShadows)
+        s.shadowCascades = scene::ShadowCascadeFit().fit(camera, s.sunDirection);
     backend::FrameInfo info = s.frameInfo(frameIndex, camera, clearColor, wireframe);
     const bool capture = s.renderDoc && s.captureFrame == frameIndex;
     if (capture) s.renderDoc->begin(*s.selected->instance);

@@ -63,6 +63,8 @@ struct RenderSession::Impl {
     bool terrainVisible = true;
     backend::Look look = backend::Look::Full;
     backend::TerrainShading terrainShading = backend::TerrainShading::Auto;
+    backend::Shadows shadows = backend::Shadows::Auto;
+    std::vector<scene::ShadowCascade> shadowCascades; ///< this frame's, fitted in renderFrame
     glm::vec3 sunDirection{0.4f, 0.8f, 0.3f};
     uint32_t width = 0;
     uint32_t height = 0;

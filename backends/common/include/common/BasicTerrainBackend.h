@@ -120,6 +120,9 @@ protected:
     backend::FrameReport mReport;
     backend::FrameReport mLastReport;
     bool mWireframeSupported = false;
+    /// This frame draws cascaded shadow maps rather than blob shadows
+    /// (FrameInfo::shadows, where capabilities().cascadedShadows).
+    bool mCascadedShadows = false;
 
 private:
     /// Adds to `caps.missing` what `device` lacks of what `caps` uses.
@@ -140,6 +143,8 @@ private:
     bool mDeferTerrain = false;
     /// TerrainShading::Auto defers: with the compute resolve on a GPU.
     bool mDeferOnAuto = false;
+    /// Shadows::Auto picks cascaded shadows: where they cost little on the device.
+    bool mCascadedOnAuto = false;
     bool mMainPassOpen = false;
     bool mMainPassStarted = false;
 };

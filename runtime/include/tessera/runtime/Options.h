@@ -106,6 +106,9 @@ struct Options {
     backend::Look look = backend::Look::Full;
     /// --terrain-shading auto|forward|deferred: where the full look shades the terrain.
     backend::TerrainShading terrainShading = backend::TerrainShading::Auto;
+    /// --shadows auto|blob|cascaded: the characters' shadows in the full look
+    /// (docs/LOOKS.md); cascaded only on a backend that draws them.
+    backend::Shadows shadows = backend::Shadows::Auto;
     glm::vec3 sunDirection{0.4f, 0.8f, 0.3f}; ///< --sun: towards the sun (normalised by the backend)
     bool benchBothLooks = false;        ///< --look both: --bench terrain measures every row in both looks
     /// --width, --height; unset: kDefaultWidth x kDefaultHeight (--bench

@@ -37,6 +37,7 @@ inline constexpr const char* kCreatures = "creatures";                   ///< Op
 inline constexpr const char* kAgents = "agents";                         ///< Options::agents
 inline constexpr const char* kAgentsDrawn = "agents drawn";              ///< Options::crowdDraw
 inline constexpr const char* kTerrainMode = "terrain mode";              ///< Options::terrainMode
+inline constexpr const char* kShadows = "shadows";                       ///< Options::shadows
 inline constexpr const char* kTessLevel = "continuous tessellation level"; ///< TessellationOptions::continuousLevel
 inline constexpr const char* kTessMax = "maximum tessellation level";    ///< TessellationOptions::maxLevel
 inline constexpr const char* kCharacterLevel = "character level";        ///< Options::characterLevel

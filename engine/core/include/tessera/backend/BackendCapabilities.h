@@ -38,6 +38,9 @@ struct BackendCapabilities {
     /// Draws instanced crowds with GPU culling and LOD binning (createCrowd);
     /// hosts draw crowds through drawCharacters where it does not.
     bool crowd = false;
+    /// Draws cascaded shadow maps of its characters and crowds
+    /// (FrameInfo::shadows); where it does not, only blob shadows.
+    bool cascadedShadows = false;
     /// Draws Catmull-Clark surfaces with analytic displacement (createSubdiv).
     bool subdiv = false;
     /// Bit (1 << TerrainMode) for each terrain mode the backend draws.

@@ -2,6 +2,8 @@
 /// @file FrameInfo.h
 /// Per-frame parameters the host hands to Backend::beginFrame.
 
+#include "tessera/scene/ShadowCascade.h"
+
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <span>
@@ -30,6 +32,14 @@ enum class TerrainShading : uint32_t {
     Deferred = 2, ///< the terrain resolve shades each terrain pixel once
 };
 
+/// How characters shadow the scene in the full look (docs/LOOKS.md,
+/// "Characters' shadows on the terrain" and "Cascaded shadow maps").
+enum class Shadows : uint32_t {
+    Auto = 0,     ///< each backend's cheaper choice for the device (BackendCapabilities::cascadedShadows)
+    Blob = 1,     ///< a soft ellipse per character on the terrain: the cheapest
+    Cascaded = 2, ///< cascaded shadow maps of the characters: on the terrain and on each other
+};
+
 struct FrameInfo {
     uint64_t frameIndex = 0;
     double timeSeconds = 0.0;
@@ -50,6 +60,10 @@ struct FrameInfo {
     /// world XZ, z: its side; z = 0: no character shadows this frame).
     std::span<const glm::vec4> shadowCasters;
     glm::vec3 shadowRegion{0.0f};
+    Shadows shadows = Shadows::Auto; ///< with the full look
+    /// The cascades fitted to this frame's view and sun (scene::ShadowCascadeFit),
+    /// nearest first; empty where the host asks for no cascaded shadows.
+    std::span<const scene::ShadowCascade> shadowCascades;
     /// The command buffer, target and profiler of this frame; null on the null
     /// backend, which runs the frame logic with no GPU.
     gpu::FrameContext* gpu = nullptr;

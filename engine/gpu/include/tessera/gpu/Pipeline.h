@@ -36,6 +36,10 @@ struct GraphicsPipelineDesc {
     bool depthTest = true;
     bool depthWrite = true;
     VkCompareOp depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
+    /// Depth bias (both zero: none): a shadow map's casters pushed away from
+    /// the sun by a constant (in the depth format's steps) and by their slope.
+    float depthBiasConstant = 0.0f;
+    float depthBiasSlope = 0.0f;
     /// Straight alpha blending (src alpha, one minus src alpha) on every
     /// colour target: overlays drawn over the frame.
     bool alphaBlend = false;

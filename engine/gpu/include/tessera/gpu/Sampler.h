@@ -17,6 +17,11 @@ public:
     Sampler() = default;
     /// Linear or nearest filtering with the given addressing on all axes.
     Sampler(Device& device, VkFilter filter, VkSamplerAddressMode address, std::string name);
+    /// A depth-comparison sampler for shadow maps: returns `reference
+    /// compare stored` (1 lit, 0 shadowed), filtered bilinearly with
+    /// VK_FILTER_LINEAR (hardware 2x2 percentage-closer filtering); outside
+    /// the map it clamps to an opaque white border (depth 1: lit).
+    Sampler(Device& device, VkFilter filter, VkCompareOp compare, std::string name);
 
     VkSampler handle() const { return mSampler.get(); }
 

@@ -19,7 +19,7 @@ namespace tessera::demo {
 struct DemoFlagText {
     std::vector<std::string> models, splats;
     std::string agents, clearColor, camera, subdivLevel, orbitDistance;
-    std::string characterPath, normals, subdivView, sculpt, terrainMode, tessMetric, look, terrainShading, sun;
+    std::string characterPath, normals, subdivView, sculpt, terrainMode, tessMetric, look, terrainShading, shadows, sun;
     std::string hideFeatures;
     float lodNear = 0, lodFar = 0, lodEdge = 0, characterLevel = 0, subdivPixels = 0;
     uint64_t lodBudget = 0, subdivBudget = 0, deviceMemoryCap = 0;
