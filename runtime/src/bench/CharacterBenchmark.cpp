@@ -77,8 +77,8 @@ struct RowSetup {
 /// reaches, each drawn two-pass and single-pass.
 class CharacterBench {
 public:
-    CharacterBench(const BenchDriver& driver, terrain::Terrain& ground, CharacterPopulation& crowd)
-        : mDriver(driver), mGround(ground), mCrowd(crowd) {}
+    CharacterBench(const BenchDriver& driver, World& world, CharacterPopulation& crowd)
+        : mDriver(driver), mGround(world.terrain()), mDrawn(world.ground()), mCrowd(crowd) {}
 
     /// The run's settings and levels, with a note when backends that
     /// tessellate further draw a level the others do not.
@@ -94,6 +94,7 @@ private:
 
     const BenchDriver& mDriver;
     terrain::Terrain& mGround;
+    terrain::DrawnSurface& mDrawn; ///< where the characters stand
     CharacterPopulation& mCrowd;
     CharacterBenchSummary mSummary;
     float mRequested = 0.0f, mShared = 0.0f;
@@ -140,6 +141,7 @@ Status CharacterBench::runBackend(const std::string& name) {
     if (Status ok = session.createCharacters(mCrowd.assets()); !ok) return ok.error();
     setup.camera.setPose(options.camera.value_or(mCrowd.orbitPose(kPoseSeconds)));
     setup.camera.setAspect(float(session.width()) / float(session.height()));
+    session.updateGround(mDrawn, setup.camera, setup.settings);
     setup.trace = mDriver.tracePath("characters-" + session.capabilities().name);
     for (const float level : levels) {
         mSummary.tableLevel = std::max(mSummary.tableLevel, double(level));
@@ -206,7 +208,7 @@ Status runCharacterBenchmark(const Options& options) {
         return failSetting(setting::kCharacterBenchmark, ": no characters to draw (", names.name(setting::kCreatures),
                            " 0 and no ", names.name(setting::kModels), ")");
     }
-    CharacterBench bench(driver.value(), loaded.value()->terrain(), *crowd);
+    CharacterBench bench(driver.value(), *loaded.value(), *crowd);
     bench.describe();
     for (const std::string& backend : driver.value().backends())
         if (Status ok = bench.runBackend(backend); !ok) return ok;

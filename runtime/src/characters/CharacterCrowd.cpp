@@ -39,10 +39,11 @@ glm::vec3 findSite(const terrain::Terrain& terrain) {
 
 } // namespace
 
-Result<std::unique_ptr<CharacterCrowd>> CharacterCrowd::load(const Options& options,
-                                                             const terrain::Terrain& terrain) {
+Result<std::unique_ptr<CharacterCrowd>> CharacterCrowd::load(const Options& options, const terrain::Terrain& terrain,
+                                                             const terrain::DrawnSurface& ground) {
     std::unique_ptr<CharacterCrowd> crowd(new CharacterCrowd());
     crowd->mTerrain = &terrain;
+    crowd->mGround = &ground;
     crowd->mSite = findSite(terrain);
     crowd->mOrbit = {crowd->mSite, options.orbitDistance.value_or(kOrbitDistance), kOrbitHeight, kLookHeight};
     crowd->mOrbitFixed = options.orbitDistance.has_value();
@@ -197,7 +198,8 @@ CharacterCrowd::Placement CharacterCrowd::placementAt(const Member& m, double se
         const glm::vec2 tangent = (m.speed < 0.0f ? -1.0f : 1.0f) * glm::vec2(-std::sin(theta), std::cos(theta));
         heading = std::atan2(tangent.x, tangent.y);
     }
-    return {glm::vec3(at.x, mTerrain->heightAt(at.x, at.y), at.y), heading};
+    // On the ground as drawn this frame, not the height field under it.
+    return {glm::vec3(at.x, mGround->heightAt(at.x, at.y), at.y), heading};
 }
 
 void CharacterCrowd::updateInstances(double seconds, const scene::Camera& camera, const CharacterLevels& levels) {

@@ -11,6 +11,7 @@
 #include "tessera/runtime/CharacterPoser.h"
 #include "tessera/runtime/Options.h"
 #include "tessera/core/Result.h"
+#include "tessera/terrain/DrawnSurface.h"
 #include "tessera/terrain/Terrain.h"
 
 #include <memory>
@@ -24,9 +25,11 @@ public:
     /// Loads the generated creatures (content/characters/froblin_<1..3>.glb,
     /// --crowd of them) and CesiumMan when the build copied it (both only
     /// when --crowd > 0), and every --model; places them on the flattest
-    /// ground near the terrain's centre. A file that cannot be used is an
-    /// error naming it.
-    static Result<std::unique_ptr<CharacterCrowd>> load(const Options& options, const terrain::Terrain& terrain);
+    /// ground near the terrain's centre, each frame standing on `ground`
+    /// (the terrain as drawn). A file that cannot be used is an error naming
+    /// it. Both must outlive the crowd.
+    static Result<std::unique_ptr<CharacterCrowd>> load(const Options& options, const terrain::Terrain& terrain,
+                                                        const terrain::DrawnSurface& ground);
 
     CharacterAssets& assets() override { return mAssets; }
     /// Poses everybody in view at `seconds` (characters whose animated box is
@@ -85,6 +88,7 @@ private:
     void frameModels(uint32_t firstModel);
 
     const terrain::Terrain* mTerrain = nullptr;
+    const terrain::DrawnSurface* mGround = nullptr;
     CharacterAssets mAssets;
     CharacterPoser mPoser;
     std::unique_ptr<InstancedCrowd> mInstanced;

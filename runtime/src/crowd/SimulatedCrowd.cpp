@@ -62,10 +62,11 @@ std::string describeGait(const CrowdGait& gait, const CharacterAssets& assets) {
 
 } // namespace
 
-Result<std::unique_ptr<SimulatedCrowd>> SimulatedCrowd::create(const Options& options,
-                                                               const terrain::Terrain& terrain) {
+Result<std::unique_ptr<SimulatedCrowd>> SimulatedCrowd::create(const Options& options, const terrain::Terrain& terrain,
+                                                               const terrain::DrawnSurface& ground) {
     std::unique_ptr<SimulatedCrowd> self(new SimulatedCrowd());
     self->mTerrain = &terrain;
+    self->mGround = &ground;
     self->mDrawCount = options.crowdDraw;
     const uint32_t agents = options.agents.empty() ? kDefaultAgents : options.agents.front();
     if (Status ok = self->mAssets.addFroblins(options.contentDir, CharacterAssets::kFroblinSeeds); !ok)
@@ -205,12 +206,19 @@ std::string SimulatedCrowd::summary() const {
     return text;
 }
 
+glm::vec3 SimulatedCrowd::standing(const glm::vec3& position) const {
+    // The simulation walks the height field; the creature is drawn on the
+    // ground the backend draws, which at a low level lies metres above a
+    // hollow or below a crest (terrain::DrawnSurface).
+    return {position.x, mGround->heightAt(position.x, position.z), position.z};
+}
+
 glm::mat4 SimulatedCrowd::agentWorld(uint32_t agent, uint32_t creature) const {
     const crowd::CrowdAgents& agents = mCrowd->agents();
     // An agent's stride grows with its radius (CrowdSettings::strideRadius),
     // so its creature does too.
     const float scale = mGait.creatures[creature].scale * agents.radius[agent] / mGait.strideRadius;
-    glm::mat4 world = glm::translate(glm::mat4(1.0f), agents.position[agent]);
+    glm::mat4 world = glm::translate(glm::mat4(1.0f), standing(agents.position[agent]));
     world = glm::rotate(world, agents.heading[agent], glm::vec3(0, 1, 0));
     return glm::scale(world, glm::vec3(scale));
 }
@@ -228,7 +236,7 @@ void SimulatedCrowd::updateInstances(const scene::Camera& camera, const Characte
             const scene::Aabb& box = mAssets[creature].box;
             // As agentWorld: the creature grows with the agent's radius.
             const float scale = gait.scale * agents.radius[i] / mGait.strideRadius;
-            const glm::vec3 p = agents.position[i];
+            const glm::vec3 p = standing(agents.position[i]);
             const glm::vec3 centre = box.center();
             shader::CrowdInstance instance;
             // A sphere holding the box at any heading: the box's, grown by how
@@ -273,7 +281,7 @@ void SimulatedCrowd::update(double, const scene::Camera& camera, const Character
     for (uint32_t i : mCulled) {
         const Reach& reach = mReach[agents.id[i] % creatures];
         const float size = agents.radius[i] / mGait.strideRadius;
-        const glm::vec3 p = agents.position[i];
+        const glm::vec3 p = standing(agents.position[i]);
         const scene::Aabb box{p + size * glm::vec3(-reach.radius, reach.bottom, -reach.radius),
                               p + size * glm::vec3(reach.radius, reach.top, reach.radius)};
         if (frustum.intersects(box)) mNearest.emplace_back(glm::distance2(p, eye), i);

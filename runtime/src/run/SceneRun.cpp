@@ -160,6 +160,11 @@ void SceneRun::renderFrame(uint32_t frame, bool readback) {
         mCamera.setPose(mWorld->cameraPose(frame));
         mCamera.setAspect(float(session.width()) / float(session.height()));
     }
+    {
+        // The characters stand on the ground the backend draws this frame.
+        TESSERA_CPU_SCOPE("terrain.ground");
+        session.updateGround(mWorld->ground(), mCamera, mSettings);
+    }
     backend::CharacterDrawInfo draw;
     backend::CrowdDrawInfo crowdDraw;
     CharacterPopulation* characters = mWorld->characters();

@@ -174,6 +174,14 @@ std::string RenderSession::driverName() const {
     const auto& f = device->features();
     return f.driverName + " " + f.driverInfo;
 }
+void RenderSession::updateGround(terrain::DrawnSurface& ground, const scene::Camera& camera,
+                                 const terrain::TessellationSettings& settings) const {
+    const auto& caps = capabilities();
+    terrain::TessellationSettings drawn = settings;
+    if (!caps.drawsTerrainMode(drawn.mode)) drawn.mode = terrain::TerrainMode::LowRes;
+    ground.update(drawn, terrain::TessView::fromCamera(camera, height()), caps.maxTessFactor);
+}
+
 Result<terrain::TessellationSettings> RenderSession::resolveTessellation(const Options& options) const {
     const auto& caps = capabilities();
     const TessellationOptions& asked = options.tessellation;

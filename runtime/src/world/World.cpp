@@ -40,6 +40,7 @@ Result<std::unique_ptr<World>> World::load(const Options& options, uint32_t fram
     }
     terrain::Terrain& ground = *scene->mTerrain;
     for (const auto& splat : options.splats) ground.splat(splat);
+    scene->mGround = std::make_unique<terrain::DrawnSurface>(ground);
 
     scene::CameraPathSettings pathSettings;
     pathSettings.seed = options.seed;
@@ -53,7 +54,7 @@ Result<std::unique_ptr<World>> World::load(const Options& options, uint32_t fram
         // only as Catmull-Clark surfaces, so the crowd leaves them out.
         Options crowdOptions = options;
         if (options.characterSurface == "catmull-clark") crowdOptions.models.clear();
-        auto crowd = CharacterCrowd::load(crowdOptions, ground);
+        auto crowd = CharacterCrowd::load(crowdOptions, ground, *scene->mGround);
         if (!crowd) return crowd.error();
         if (options.characterSurface != "planar") {
             auto characters = SubdivCharacters::load(options, ground, crowd.value()->site());
@@ -82,7 +83,7 @@ Result<std::unique_ptr<World>> World::load(const Options& options, uint32_t fram
         }
         scene->mCharacters = std::move(crowd.value());
     } else if (options.scene == "crowd") {
-        auto crowd = SimulatedCrowd::create(options, ground);
+        auto crowd = SimulatedCrowd::create(options, ground, *scene->mGround);
         if (!crowd) return crowd.error();
         scene->mSimulated = crowd.value().get();
         scene->mCharacters = std::move(crowd.value());

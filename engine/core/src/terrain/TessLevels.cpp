@@ -1,11 +1,13 @@
 #include "tessera/terrain/TessLevels.h"
 
+#include "tessera/scene/Camera.h"
 #include "tessera/terrain/Terrain.h"
 
 #include "tessera/shaders/TerrainPatches.h"
 #include "tessera/shaders/TessFactors.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace tessera::terrain {
 namespace {
@@ -37,6 +39,11 @@ float edgeLevel(const Terrain& terrain, const TessellationSettings& s, const Tes
 }
 
 } // namespace
+
+TessView TessView::fromCamera(const scene::Camera& camera, uint32_t viewportHeight) {
+    // As BasicTerrainBackend::pixelsPerMetre and the null backend.
+    return {camera.position(), float(viewportHeight) * std::abs(camera.projection()[1][1]) * 0.5f};
+}
 
 TessLevels computeTessLevels(const Terrain& terrain, const TessellationSettings& settings, const TessView& view,
                              float backendMaxLevel) {

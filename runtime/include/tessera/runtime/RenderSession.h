@@ -15,6 +15,7 @@
 #include "tessera/backend/FrameReport.h"
 #include "tessera/lod/LodPolicy.h"
 #include "tessera/scene/Camera.h"
+#include "tessera/terrain/DrawnSurface.h"
 #include "tessera/terrain/Terrain.h"
 
 #include <filesystem>
@@ -46,6 +47,12 @@ public:
     /// The tessellation the options ask for, checked against this backend:
     /// the default mode, and a clear error for a mode or level it cannot draw.
     Result<terrain::TessellationSettings> resolveTessellation(const Options& options) const;
+    /// Makes `ground` the terrain this backend draws with `settings` seen by
+    /// `camera` on this session's viewport: its levels capped at its highest,
+    /// the control mesh where it draws the mode untessellated (as drawTerrain
+    /// does). What characters stand on (terrain::DrawnSurface).
+    void updateGround(terrain::DrawnSurface& ground, const scene::Camera& camera,
+                      const terrain::TessellationSettings& settings) const;
 
     /// Uploads every asset of `assets` to the backend and binds the handles
     /// (destroyed with the session). An asset the backend cannot draw is an

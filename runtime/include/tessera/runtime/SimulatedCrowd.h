@@ -16,6 +16,7 @@
 #include "tessera/crowd/Crowd.h"
 #include "tessera/scene/CameraPath.h"
 #include "tessera/crowd/CrowdLayout.h"
+#include "tessera/terrain/DrawnSurface.h"
 #include "tessera/terrain/Terrain.h"
 
 #include <memory>
@@ -39,8 +40,10 @@ public:
     /// the layout on `terrain` and creates the crowd of --agents agents
     /// (--threads). Errors: too many agents for the machine, a terrain
     /// without room for them (planCrowdLayout's), a creature that cannot be
-    /// used. The terrain must outlive the crowd.
-    static Result<std::unique_ptr<SimulatedCrowd>> create(const Options& options, const terrain::Terrain& terrain);
+    /// used. Agents walk the height field (`terrain`) and are drawn standing
+    /// on `ground`, the terrain as drawn. Both must outlive the crowd.
+    static Result<std::unique_ptr<SimulatedCrowd>> create(const Options& options, const terrain::Terrain& terrain,
+                                                          const terrain::DrawnSurface& ground);
 
     /// One simulation step (crowd::Crowd::step, the demo's 1/30 s), traced as
     /// "crowd.step", and the trace's crowd counters.
@@ -95,11 +98,15 @@ private:
     crowd::CrowdSettings settings(uint32_t threads);
     /// Radii around the gait's stride radius, speeds around its natural speed.
     crowd::SpawnPattern spawnPattern(uint32_t seed) const;
+    /// Where an agent at `position` (on the height field) is drawn standing:
+    /// its (x, z) on the drawn ground.
+    glm::vec3 standing(const glm::vec3& position) const;
     glm::mat4 agentWorld(uint32_t agent, uint32_t creature) const;
     /// Every agent as an instance of the instanced crowd, and its LOD selection.
     void updateInstances(const scene::Camera& camera, const CharacterLevels& levels);
 
     const terrain::Terrain* mTerrain = nullptr;
+    const terrain::DrawnSurface* mGround = nullptr;
     CharacterAssets mAssets;
     CharacterPoser mPoser;
     CrowdGait mGait;

@@ -11,6 +11,7 @@
 #include "tessera/runtime/SubdivModels.h"
 #include "tessera/core/Result.h"
 #include "tessera/scene/CameraPath.h"
+#include "tessera/terrain/DrawnSurface.h"
 #include "tessera/terrain/HeightField.h"
 #include "tessera/terrain/MeteorShower.h"
 #include "tessera/terrain/Terrain.h"
@@ -38,6 +39,9 @@ public:
     static Result<std::unique_ptr<World>> load(const Options& options, uint32_t frames);
 
     terrain::Terrain& terrain() { return *mTerrain; }
+    /// The terrain as the backend draws it, where the characters stand: the
+    /// frame loop updates it each frame before the characters (SceneRun).
+    terrain::DrawnSurface& ground() { return *mGround; }
     /// The characters of the characters or crowd scene; null in the terrain scene.
     CharacterPopulation* characters() { return mCharacters.get(); }
     /// The characters scene's Catmull-Clark surfaces (--model FILE.obj);
@@ -70,6 +74,7 @@ private:
     void scheduleMeteors(const Options& options, uint32_t frames);
 
     std::unique_ptr<terrain::Terrain> mTerrain;
+    std::unique_ptr<terrain::DrawnSurface> mGround;
     std::unique_ptr<CharacterPopulation> mCharacters;
     SimulatedCrowd* mSimulated = nullptr;
     std::unique_ptr<SubdivModels> mSurfaces;

@@ -13,6 +13,10 @@
 
 #include <glm/vec3.hpp>
 
+namespace tessera::scene {
+class Camera;
+}
+
 namespace tessera::terrain {
 
 class Terrain;
@@ -23,6 +27,10 @@ struct TessView {
     /// Viewport height * |projection[1][1]| / 2: pixels covered by one metre
     /// seen face-on from one metre away.
     float pixelsPerMetre = 1.0f;
+
+    /// What the backends' factor passes see of `camera` on a viewport
+    /// `viewportHeight` pixels tall (its position and projection).
+    static TessView fromCamera(const scene::Camera& camera, uint32_t viewportHeight);
 };
 
 /// Levels per canonical edge (PatchGrid numbering) and per patch (patch level:
