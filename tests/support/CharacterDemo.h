@@ -102,6 +102,10 @@ inline std::vector<std::string> soloCharacterArgs(const std::string& backend, co
                                                   const std::string& clearColor, const std::string& orbitDistance,
                                                   int width, int height) {
     std::vector<std::string> args = {"--backend", backend, "--crowd", "0", "--model", model, "--no-terrain"};
+    // Characters stand on the terrain as the backend would draw it, drawn or
+    // not (docs/CROWD.md 6.8); one level cap every backend draws keeps them
+    // at the same place on each.
+    args.insert(args.end(), {"--tess-max", "14.99"});
     // The plain look: the background stays the clear colour (the full look
     // paints the sky there), so holes show as that colour.
     args.insert(args.end(), {"--clear-color", clearColor, "--look", "plain", "--orbit-distance", orbitDistance});
