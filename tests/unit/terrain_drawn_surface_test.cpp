@@ -84,7 +84,7 @@ TEST(TerrainDrawnSurface, EqualsTheTessellatedTrianglesEverywhere) {
     }
 }
 
-TEST(TerrainDrawnSurface, VerticesAreOnTheHeightFieldAndLowResIsTheControlMesh) {
+TEST(TerrainDrawnSurface, VerticesAreOnTheHeightFieldLowResIsTheControlMeshHiddenIsTheField) {
     Terrain t(hills(), 4);
     DrawnSurface surface(t);
     // Before any update: the control mesh, two triangles split from
@@ -105,6 +105,16 @@ TEST(TerrainDrawnSurface, VerticesAreOnTheHeightFieldAndLowResIsTheControlMesh) 
         const glm::vec2 xz = (glm::vec2(1.0f, 2.0f) + uv) * size;
         EXPECT_NEAR(surface.heightAt(xz.x, xz.y), t.heightAt(xz.x, xz.y), 1e-3f);
     }
+    // With the terrain hidden, the height field itself, until the next update.
+    TessellationSettings coarse;
+    coarse.mode = TerrainMode::Continuous;
+    coarse.continuousLevel = 2.0f;
+    surface.update(coarse, kLow, 64.0f);
+    EXPECT_GT(std::abs(surface.heightAt(200.0f, 90.0f) - t.heightAt(200.0f, 90.0f)), 0.5f);
+    surface.useHeightField();
+    EXPECT_EQ(surface.heightAt(200.0f, 90.0f), t.heightAt(200.0f, 90.0f));
+    surface.update(coarse, kLow, 64.0f);
+    EXPECT_NE(surface.heightAt(200.0f, 90.0f), t.heightAt(200.0f, 90.0f));
 }
 
 TEST(TerrainDrawnSurface, LowLevelsStrayFromTheHeightFieldAndHighOnesFollowIt) {

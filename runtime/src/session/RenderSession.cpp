@@ -176,6 +176,10 @@ std::string RenderSession::driverName() const {
 }
 void RenderSession::updateGround(terrain::DrawnSurface& ground, const scene::Camera& camera,
                                  const terrain::TessellationSettings& settings) const {
+    // With no terrain drawn (--no-terrain) there is nothing to stand on:
+    // the height field, so that terrain-less views stay the same whatever
+    // the levels (the backends' character parity and crack tests).
+    if (!mImpl->terrainVisible) return ground.useHeightField();
     const auto& caps = capabilities();
     terrain::TessellationSettings drawn = settings;
     if (!caps.drawsTerrainMode(drawn.mode)) drawn.mode = terrain::TerrainMode::LowRes;

@@ -18,6 +18,7 @@ DrawnSurface::DrawnSurface(const Terrain& terrain) : mTerrain(terrain), mPatches
 DrawnSurface::~DrawnSurface() = default;
 
 void DrawnSurface::update(const TessellationSettings& settings, const TessView& view, float backendMaxLevel) {
+    mHeightField = false;
     mLevels = computeTessLevels(mTerrain, settings, view, backendMaxLevel);
     // A crater changes heights, not patterns; rare enough to rebuild all.
     const bool reshaped = mTerrain.revision() != mRevision;
@@ -70,6 +71,7 @@ const DrawnSurface::Patch& DrawnSurface::built(uint32_t index) const {
 }
 
 float DrawnSurface::heightAt(float x, float z) const {
+    if (mHeightField) return mTerrain.heightAt(x, z);
     const PatchGrid& grid = mTerrain.grid();
     const uint32_t side = grid.patchesPerSide();
     const glm::vec2 size = grid.patchSize();

@@ -50,7 +50,8 @@ public:
     /// Makes `ground` the terrain this backend draws with `settings` seen by
     /// `camera` on this session's viewport: its levels capped at its highest,
     /// the control mesh where it draws the mode untessellated (as drawTerrain
-    /// does). What characters stand on (terrain::DrawnSurface).
+    /// does); the height field while the terrain is hidden. What characters
+    /// stand on (terrain::DrawnSurface).
     void updateGround(terrain::DrawnSurface& ground, const scene::Camera& camera,
                       const terrain::TessellationSettings& settings) const;
 

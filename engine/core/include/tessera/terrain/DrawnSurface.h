@@ -49,6 +49,10 @@ public:
     /// changed forgets its pattern; a splat since the last update, every
     /// patch its heights. Not concurrent with heightAt().
     void update(const TessellationSettings& settings, const TessView& view, float backendMaxLevel);
+    /// No terrain is drawn this frame (it is hidden): until the next
+    /// update(), heightAt() is the height field's, Terrain::heightAt, as
+    /// anything standing on it was placed before there was a drawn surface.
+    void useHeightField() { mHeightField = true; }
 
     /// The drawn surface's height (metres) at world (x, z), clamped to the
     /// control mesh. Thread-safe: concurrent calls build a patch's pattern
@@ -74,7 +78,8 @@ private:
 
     const Terrain& mTerrain;
     TessLevels mLevels;
-    uint64_t mRevision = 0; ///< the terrain's, at the last update
+    uint64_t mRevision = 0;    ///< the terrain's, at the last update
+    bool mHeightField = false; ///< useHeightField() since the last update
     mutable std::vector<Patch> mPatches;
 };
 
