@@ -7,7 +7,7 @@
 /// case docs/CROWD.md (6.8) is about. Gentle enough (23 degrees at most) for
 /// the crowd to walk all of it.
 
-#include "tessera/terrain/HeightMapIO.h"
+#include "SmallTerrain.h"
 
 #include <unistd.h>
 
@@ -36,20 +36,7 @@ inline std::string hillyTerrain(const std::filesystem::path& outDir, std::string
             const double h = 100.0 - kRelief * std::cos(k * x) * std::cos(k * z);
             samples.push_back(uint16_t(std::lround(h / kMetresPerUnit)));
         }
-    std::filesystem::create_directories(outDir);
-    const std::filesystem::path partial = out.string() + "." + std::to_string(::getpid()) + ".partial";
-    auto written = terrain::saveHeightMapPng16(partial, kSize, kSize, samples);
-    if (!written.ok()) {
-        error = written.error().message;
-        return {};
-    }
-    std::error_code ec;
-    std::filesystem::rename(partial, out, ec);
-    if (ec) {
-        error = "cannot rename " + partial.string() + ": " + ec.message();
-        return {};
-    }
-    return out.string();
+    return writeHeightMapAtomically(out, kSize, samples, error);
 }
 
 } // namespace tessera::test

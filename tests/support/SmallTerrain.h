@@ -17,6 +17,28 @@
 
 namespace tessera::test {
 
+/// Writes `samples` (size x size) as a 16-bit height map PNG at `out`
+/// through a per-process partial file and a rename, so tests running in
+/// parallel never read half a file. Returns `out`, or "" with `error` set.
+inline std::string writeHeightMapAtomically(const std::filesystem::path& out, uint32_t size,
+                                            const std::vector<uint16_t>& samples, std::string& error) {
+    std::filesystem::create_directories(out.parent_path());
+    const std::filesystem::path partial = out.string() + "." + std::to_string(::getpid()) + ".partial";
+    auto written = terrain::saveHeightMapPng16(partial, size, size, samples);
+    if (!written.ok()) {
+        error = written.error().message;
+        return {};
+    }
+    std::error_code ec;
+    std::filesystem::rename(partial, out, ec);
+    if (ec) {
+        error = "cannot rename " + partial.string() + ": " + ec.message();
+        return {};
+    }
+    return out.string();
+}
+
+
 /// Writes the crop of `contentDir`/terrain/height.png into `outDir` once and
 /// returns its path; empty, with `error` set, when it cannot. Tests run in
 /// parallel: each writes its own partial file and renames it into place, so
@@ -37,20 +59,7 @@ inline std::string smallTerrainCrop(const std::filesystem::path& contentDir, con
     samples.reserve(size_t(kSize) * kSize);
     for (uint32_t j = 0; j < kSize; ++j)
         for (uint32_t i = 0; i < kSize; ++i) samples.push_back(h.samples()[size_t(z0 + j) * h.width() + x0 + i]);
-    std::filesystem::create_directories(outDir);
-    const std::filesystem::path partial = out.string() + "." + std::to_string(::getpid()) + ".partial";
-    auto written = terrain::saveHeightMapPng16(partial, kSize, kSize, samples);
-    if (!written.ok()) {
-        error = written.error().message;
-        return {};
-    }
-    std::error_code ec;
-    std::filesystem::rename(partial, out, ec);
-    if (ec) {
-        error = "cannot rename " + partial.string() + ": " + ec.message();
-        return {};
-    }
-    return out.string();
+    return writeHeightMapAtomically(out, kSize, samples, error);
 }
 
 } // namespace tessera::test
