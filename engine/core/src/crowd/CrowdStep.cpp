@@ -1,6 +1,7 @@
 #include "tessera/crowd/Crowd.h"
 
 #include "AgentBins.h"
+#include "AgentGait.h"
 #include "AgentOrder.h"
 #include "AgentState.h"
 #include "Avoidance.h"
@@ -244,7 +245,10 @@ void Crowd::steer() {
                     oncoming += std::clamp(-glm::dot(stream, ahead) / preferredSpeed, 0.0f, 8.0f);
                 if (oncoming > 0.0f) preferred = rotate(preferred, std::min(kMaxLaneShift, kLaneShift * oncoming));
             }
-            const float maxSpeed = std::max(glm::length(preferred), 0.25f * speed);
+            // No faster than the walk clip plays without sliding.
+            const AgentGait gait = AgentGait::of(s, a.radius[i]);
+            if (const float wanted = glm::length(preferred); wanted > gait.fastest) preferred *= gait.fastest / wanted;
+            const float maxSpeed = std::min(std::max(glm::length(preferred), 0.25f * speed), gait.fastest);
             // Walls: the nearest points of the impassable cells within reach
             // (none for an agent walking off impassable ground).
             uint32_t wallCount = 0;
@@ -275,7 +279,8 @@ void Crowd::steer() {
                                                      std::span<const WallPoint>(walls, wallCount), lines);
             const glm::vec2 delta = chosen - a.velocity[i];
             const float change = glm::length(delta);
-            st.nextVelocity[i] = change > maxDelta ? a.velocity[i] + delta * (maxDelta / change) : chosen;
+            const glm::vec2 limited = change > maxDelta ? a.velocity[i] + delta * (maxDelta / change) : chosen;
+            st.nextVelocity[i] = gait.walkable(limited, chosen);
         }
     });
 }
@@ -291,20 +296,10 @@ void Crowd::integrate() {
             const glm::vec2 v = st.nextVelocity[i];
             a.velocity[i] = v;
             st.moved[i] = xz(a.position[i]) + v * dt;
-            const float speed = glm::length(v);
-            if (speed > 0.05f) {
+            if (v != glm::vec2(0.0f)) {
                 const float turn = wrapAngle(std::atan2(v.x, v.y) - a.heading[i]);
                 a.heading[i] = wrapAngle(a.heading[i] + std::clamp(turn, -maxTurn, maxTurn));
             }
-            if (speed > s.walkAbove) a.clip[i] = AgentClip::Walk;
-            else if (speed < s.idleBelow) a.clip[i] = AgentClip::Idle;
-            // The walk phase follows the ground covered, so feet do not slide;
-            // a bigger agent takes proportionally longer strides.
-            const float advance = a.clip[i] == AgentClip::Walk
-                                      ? speed * dt / (s.walkStrideLength * a.radius[i] / s.strideRadius)
-                                      : dt / s.idleCycleSeconds;
-            a.phase[i] += advance;
-            a.phase[i] -= std::floor(a.phase[i]);
             st.fleeTime[i] = std::max(0.0f, st.fleeTime[i] - dt);
         }
     });
@@ -427,16 +422,25 @@ void Crowd::finishStep() {
     core::parallelForRanges(uint32_t(a.size()), kGrain, s.threads, [&](core::IndexRange range) {
         for (uint32_t i = range.begin; i < range.end; ++i) {
             const glm::vec2 p = st.moved[i];
+            // The clip follows the ground actually covered (separation's
+            // pushes included), so feet stay planted.
+            AgentGait::of(s, a.radius[i])
+                .advance(s, a.velocity[i] != glm::vec2(0.0f), glm::distance(p, xz(a.position[i])), a.clip[i], a.phase[i]);
             a.position[i] = glm::vec3(p.x, mTerrain.heightAt(p.x, p.y), p.y);
             st.flags[i] &= ~kArrived;
             if (!(st.flags[i] & kStaying) && nav.field(a.goalGroup[i]).goal().contains(p)) arrive(i);
             // Stuck: wanting to walk but not getting stuckProgress away from
             // where it last was. Measured on the ground, not on the
             // potential, which rises under an agent as the crowd ahead of
-            // it thickens.
-            const bool settled = (st.flags[i] & kStaying) && glm::distance(p, st.spot[i]) <= kStaySpotReach;
-            if (settled || (st.flags[i] & (kEscaping | kUnreachable)) || st.fleeTime[i] > 0.0f ||
-                glm::distance(p, st.anchor[i]) >= s.stuckProgress) {
+            // it thickens. An agent making for its spot in a Stay goal must
+            // get closer to it: one that walks round a spot others stand on
+            // (it cannot creep, only walk or stand) is stuck too.
+            const bool staying = st.flags[i] & kStaying;
+            const float toSpot = glm::distance(p, st.spot[i]);
+            const bool progress = staying ? toSpot <= glm::distance(st.anchor[i], st.spot[i]) - 0.5f * s.stuckProgress
+                                          : glm::distance(p, st.anchor[i]) >= s.stuckProgress;
+            if ((staying && toSpot <= kStaySpotReach) || (st.flags[i] & (kEscaping | kUnreachable)) ||
+                st.fleeTime[i] > 0.0f || progress) {
                 st.stuckTime[i] = 0.0f;
                 st.anchor[i] = p;
             } else {
