@@ -1,17 +1,20 @@
-// Local avoidance and separation: dense opposing groups through a gap.
+// Local avoidance and separation: dense opposing groups through a gap, and
+// crossing in the open.
 
 #include "CrowdSnapshot.h"
 #include "CrowdTestWorld.h"
 
-#include <cstdlib>
-
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 
 namespace tessera::crowd::test {
 namespace {
 
-// 2,000 agents in two groups of 1,000 cross a wall through a 16 m gap in
-// opposite directions: the densest counterflow the simulation meets.
+// 2,000 agents in two groups of 1,000 cross a wall through a 16 m gap (12 m
+// of it walkable: the wall's slopes take 2 m on each side) in opposite
+// directions: the densest counterflow the simulation meets.
 struct Crossing {
     std::unique_ptr<terrain::Terrain> ground =
         wallTerrain(161, 1.0f, 80.0f, [](float z) { return std::abs(z - 80.0f) < 8.0f; });
@@ -25,26 +28,58 @@ struct Crossing {
     };
 };
 
-TEST(CrowdSeparation, DenseCrossingThroughAGapKeepsAgentsApart) {
+TEST(CrowdSeparation, CounterflowThroughAGapResolvesAndKeepsAgentsApart) {
+    // The Froblins' own deadlock: the two groups meet in the gap. Each
+    // agent's free walking time is its walk to its goal on empty ground at
+    // its own speed (the potential of a crowd without agents); the longest
+    // is the group's. Within that time (87 s) both groups must be coming
+    // through, nobody held for long, and no pair ever overlapping by more
+    // than 5% of their radii. CROWD_COUNTERFLOW_LONG=1 runs on to twice
+    // the free walking time and prints the share through by then (the
+    // issue's bar: 95%; docs/CROWD.md, section 5).
     Crossing world;
     auto crowd = makeCrowd(*world.ground, testSettings(), world.goals, world.spawns);
-    ASSERT_TRUE(crowd);
+    auto empty = makeCrowd(*world.ground, testSettings(), world.goals, {});
+    ASSERT_TRUE(crowd && empty);
+    const CrowdAgents& a = crowd->agents();
+    std::vector<float> freeTime(a.size()), arrived(a.size(), -1.0f);
+    float longest = 0.0f;
+    for (size_t i = 0; i < a.size(); ++i) {
+        freeTime[a.id[i]] = empty->field(a.goalGroup[i]).sample(xz(a.position[i])) / a.preferredSpeed[i];
+        longest = std::max(longest, freeTime[a.id[i]]);
+    }
+    const bool longRun = std::getenv("CROWD_COUNTERFLOW_LONG") != nullptr;
     const float dt = crowd->settings().timeStep;
-    const uint32_t settle = uint32_t(2.0f / dt), steps = uint32_t(45.0f / dt);
-    float worst = 0.0f;
-    uint32_t worstStep = 0;
+    const uint32_t settle = uint32_t(2.0f / dt), steps = uint32_t((longRun ? 2.0f : 1.0f) * longest / dt);
+    float worst = 0.0f, worstStuck = 0.0f;
+    uint32_t worstStep = 0, through[2] = {0, 0}, withinTwice = 0;
     for (uint32_t s = 0; s < steps; ++s) {
         crowd->step();
         if (std::getenv("CROWD_SNAPSHOTS") && s % 150 == 0) // CROWD_SNAPSHOTS=DIR: pictures to look at
             writeSnapshot(*crowd, std::string(std::getenv("CROWD_SNAPSHOTS")) + "/crossing_" + std::to_string(s) + ".png", 4.0f);
+        for (size_t i = 0; i < a.size(); ++i)
+            if (arrived[a.id[i]] < 0.0f && world.goals[a.goalGroup[i]].region.contains(xz(a.position[i]))) {
+                arrived[a.id[i]] = float(crowd->time());
+                ++through[a.goalGroup[i]];
+                withinTwice += crowd->time() <= 2.0 * freeTime[a.id[i]];
+            }
         if (s < settle) continue;
+        worstStuck = std::max(worstStuck, crowd->stats().maxStuckSeconds);
         const OverlapReport overlap = crowd->measureOverlap();
         if (overlap.worst > worst) worst = overlap.worst, worstStep = s;
     }
-    const CrowdStats& stats = crowd->stats();
-    std::printf("worst overlap %.3f of the sum of radii (step %u); %u of 2000 staying at their goal, %u stuck, "
-                "max stuck %.1f s\n", double(worst), worstStep, stats.staying, stats.stuck, double(stats.maxStuckSeconds));
+    std::printf("after %.0f s (%.1f times the longest free walk, %.1f s): %u and %u of 1000 through, %u of 2000 within twice "
+                "their own free walk; %u stuck now, longest held %.1f s; worst overlap %.3f of the sum of radii (step %u)\n",
+                crowd->time(), crowd->time() / longest, double(longest), through[0], through[1], withinTwice,
+                crowd->stats().stuck, double(worstStuck), double(worst), worstStep);
     EXPECT_LE(worst, 0.05f);
+    if (longRun) return; // a report, not a test
+    // Before lanes, nobody was through by now and 712 stood still.
+    EXPECT_GE(through[0], 50u) << "eastbound agents must come through";
+    EXPECT_GE(through[1], 50u) << "westbound agents must come through";
+    EXPECT_GE(through[0] + through[1], 250u);
+    EXPECT_LT(crowd->stats().stuck, 100u);
+    EXPECT_LT(worstStuck, 45.0f);
 }
 
 TEST(CrowdSeparation, HeadingsTurnSmoothlyWithoutJitter) {

@@ -22,6 +22,9 @@ float restHeight(const character::CageMesh& cage) {
 void CrowdGait::apply(crowd::CrowdSettings& settings) const {
     settings.walkStrideLength = walkStrideLength;
     settings.strideRadius = strideRadius;
+    // The walk clips' pace (their mean): the crowd keeps each clip between
+    // minWalkRate and maxWalkRate of it.
+    settings.walkCycleSeconds = walkStrideLength / naturalSpeed;
     settings.idleCycleSeconds = idleCycleSeconds;
 }
 

@@ -19,12 +19,17 @@ struct Neighbour {
     glm::vec2 offset{0.0f};
     glm::vec2 velocity{0.0f};
     float radius = 0.0f;
+    uint32_t agent = 0;  ///< its index, for the caller
+    /// The share of the avoidance the agent takes (0.5: reciprocal, 1: all).
+    float share = 0.5f;
 };
 
 /// A static obstacle near the agent, as the point of it nearest the agent
-/// (relative to the agent).
+/// (relative to the agent): on a flat face, which the agent must not walk
+/// into but may walk along, or a convex corner, which it may walk past.
 struct WallPoint {
     glm::vec2 offset{0.0f};
+    bool corner = false;
 };
 
 /// Everything one agent's choice depends on.

@@ -3,6 +3,7 @@
 // potential fields are solved over: the ground (slope), fresh craters, and
 // the crowd itself, which costs more to walk against than with.
 
+#include "AgentBins.h"
 #include "tessera/crowd/CrowdSettings.h"
 #include "tessera/crowd/NavGrid.h"
 
@@ -43,18 +44,23 @@ using DirectedCosts = std::array<std::array<float, 4>, NavGrid::kTileCells * Nav
 /// Two layers:
 ///  - ground: the terrain cost, or impassable inside a hazard. Isotropic; it
 ///    decides where agents may stand.
-///  - crowding (continuum crowds, Treuille et al. 2006): where the crowd is
-///    dense, walking in a direction costs the ground cost divided by the
-///    speed the crowd lets one walk there, which blends from free walking to
-///    the crowd's own velocity along that direction as density rises. Walking
-///    with a dense stream is cheap, against it dear; and passing an oncoming
-///    stream on the wrong side (keeping it on one's right) costs extra, so
-///    opposing groups' fields pick opposite sides early and lanes form
-///    instead of a jam. Agent counts and
-///    velocities are box-filtered over 3 x 3 cells and read one cell ahead
-///    in the direction of travel; costs are quantised to eighths so small
-///    fluctuations do not wake the solver. Stored only for tiles near
-///    agents; elsewhere every direction costs the ground cost.
+///  - crowding (continuum crowds, Treuille et al. 2006), per direction of
+///    travel, from the agents' density, velocities and intended directions
+///    (each agent's wish counts where it stands and a few metres on, so
+///    others keep out of the way it is about to take):
+///     * the speed the crowd lets one walk ahead: from a free walk to the
+///       crowd's own velocity along that direction as density rises (with a
+///       dense stream cheap, against it or into a standing crowd dear);
+///     * walking against those who want to go the other way, whether they
+///       move or stand in a jam;
+///     * keeping right: oncoming walkers ahead and to the right, across the
+///       width of a passage, make each direction's cheapest way its own
+///       right side, so opposing groups take opposite sides of a passage
+///       before they meet (lanes instead of a jam).
+///    Read from summed-area tables of the samples around each tile; costs
+///    are quantised to eighths so small fluctuations do not wake the solver.
+///    Stored only for tiles near agents; elsewhere every direction costs the
+///    ground cost.
 class CostField {
 public:
     CostField(const NavGrid& grid, const CrowdSettings& settings);
@@ -82,10 +88,17 @@ public:
     /// The cells a hazard makes impassable.
     CellRect hazardCells(const Hazard& hazard) const;
 
-    /// Agents per cell of `tile` and their summed velocity, recounted from
-    /// the agents binned in it.
-    void recountTile(uint32_t tile, std::span<const uint32_t> agents, std::span<const glm::vec3> positions,
-                     std::span<const glm::vec2> velocities);
+    /// Recounts `tile`'s samples: the agents binned in it (how many, their
+    /// summed velocity), and the intended directions (unit, or zero) of
+    /// those and of the agents of the tiles around whose way ahead crosses
+    /// it. Writes only this tile's samples.
+    void recountTile(uint32_t tile, const AgentBins& bins, std::span<const glm::vec3> positions,
+                     std::span<const glm::vec2> velocities, std::span<const glm::vec2> intentions);
+    /// Whether `tile` holds samples (agents, or wishes to walk through it).
+    bool hasSamples(uint32_t tile) const { return mSamples[tile] != nullptr; }
+    /// Agents per square metre around `p` (3 x 3 cells) that want to walk
+    /// against unit `direction`, here or a few metres on.
+    float oncoming(glm::vec2 p, glm::vec2 direction) const;
     /// Recomputes every cell of `tiles` (ascending, distinct) and records
     /// what changed.
     void recomputeTiles(std::span<const uint32_t> tiles, CostChanges& changes, uint32_t threads);
@@ -94,10 +107,17 @@ public:
     size_t bytes() const;
 
 private:
-    /// Agents counted into one tile's cells.
+    /// Agents counted into one tile's cells (row by row).
     struct Samples {
-        std::array<uint16_t, NavGrid::kTileCells * NavGrid::kTileCells> count{};
-        std::array<glm::vec2, NavGrid::kTileCells * NavGrid::kTileCells> velocity{};
+        struct Cell {
+            uint16_t count = 0;        ///< agents standing in it
+            glm::vec2 velocity{0.0f};  ///< their summed velocity
+            /// Per direction (Direction order), how many want to walk that
+            /// way, here or a few metres on: the sum of their intended unit
+            /// directions' components.
+            std::array<float, 4> intent{};
+        };
+        std::array<Cell, NavGrid::kTileCells * NavGrid::kTileCells> cells{};
     };
 
     struct CrowdWindow;
@@ -110,11 +130,11 @@ private:
     float crowdingCost(const CrowdWindow& window, int32_t i, int32_t j, int d) const;
     /// Density of `count` agents over 3 x 3 cells, 0 at densityMin to 1 at densityMax.
     float densityFraction(float count) const;
-    /// Box-filtered agent count and velocity sum around cell (i, j).
-    void crowdAround(int32_t i, int32_t j, float& count, glm::vec2& velocity) const;
 
     const NavGrid& mGrid;
     float mDensityMin, mDensityRange, mSlowest, mFlowSpeed;
+    int32_t mLaneAhead, mLaneSide; ///< the keep-right look, in cells
+    int32_t mAnticipation;         ///< cells ahead an agent's intention is counted in
     std::vector<float> mCost;
     std::vector<std::unique_ptr<Samples>> mSamples;        ///< per tile, where agents are
     std::vector<std::unique_ptr<DirectedCosts>> mDirected; ///< per tile, where the crowd raises costs

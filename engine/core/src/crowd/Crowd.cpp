@@ -40,7 +40,7 @@ Result<std::unique_ptr<Crowd>> Crowd::create(const terrain::Terrain& terrain, co
     crowd->mNavigation->solveAll();
     if (Status ok = crowd->spawn(spawns); !ok) return ok.error();
     crowd->publish();
-    crowd->mNavigation->updateDensity(*crowd->mBins, crowd->mAgents.position, crowd->mAgents.velocity);
+    crowd->splatDensity();
     crowd->mNavigation->settle();
     crowd->publish();
     return crowd;

@@ -63,8 +63,9 @@ Status checkSettings(const CrowdSettings& s, const terrain::Terrain& terrain) {
         range("walkStrideLength", s.walkStrideLength, 1e-3f, 1e3f),
         range("strideRadius", s.strideRadius, 1e-3f, 1e3f),
         range("idleCycleSeconds", s.idleCycleSeconds, 1e-3f, 1e3f),
-        range("walkAbove", s.walkAbove, 0.0f, 100.0f),
-        range("idleBelow", s.idleBelow, 0.0f, s.walkAbove),
+        range("walkCycleSeconds", s.walkCycleSeconds, 1e-3f, 1e3f),
+        range("minWalkRate", s.minWalkRate, 1e-2f, 1.0f),
+        range("maxWalkRate", s.maxWalkRate, 1.0f, 10.0f),
         range("stuckSeconds", s.stuckSeconds, 0.0f, 1e6f),
         range("stuckProgress", s.stuckProgress, 0.0f, 1e6f),
     };

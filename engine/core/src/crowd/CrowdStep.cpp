@@ -1,6 +1,7 @@
 #include "tessera/crowd/Crowd.h"
 
 #include "AgentBins.h"
+#include "AgentGait.h"
 #include "AgentOrder.h"
 #include "AgentState.h"
 #include "Avoidance.h"
@@ -37,16 +38,23 @@ constexpr float kSettled = 1e-3f;
 constexpr float kStaySpotRange = 8.0f;
 // ...and has reached it when closer than this.
 constexpr float kStaySpotReach = 0.3f;
-// A stuck agent sidesteps this far off its preferred direction (radians),
-// first to the right, swapping sides every kSidestepPeriod seconds.
+// A stuck agent sidesteps this far off its preferred direction (radians):
+// to the right where others want to come through, else first to the right,
+// swapping sides every kSidestepPeriod seconds.
 constexpr float kSidestepAngle = 1.1f;
 constexpr float kSidestepPeriod = 2.0f;
-// Oncoming walkers ahead turn an agent's preferred direction to the right
-// by this much each, up to kMaxLaneShift radians: opposing streams settle
-// into lanes instead of meeting head on.
-constexpr float kLaneShift = 0.12f;
-constexpr float kMaxLaneShift = 0.6f;
-constexpr float kStreamLookAhead = 5.0f; // metres
+// Walkers wanting to come the other way around a point kLaneLookAhead
+// metres ahead turn an agent's preferred direction to the right by
+// kLaneShift radians per agent per square metre, up to kMaxLaneShift:
+// opposing streams settle into lanes instead of meeting head on.
+constexpr float kLaneLookAhead = 1.0f;
+constexpr float kLaneShift = 0.9f;
+constexpr float kMaxLaneShift = 1.3f;
+// Oncoming agents per square metre that give a stuck agent a side to take.
+constexpr float kOncomingSide = 0.05f;
+// How much more an agent held up gives way than one walking at its
+// preferred speed (ORCA's share of the avoidance, in proportion).
+constexpr float kHeldUpYield = 4.0f;
 
 using Clock = std::chrono::steady_clock;
 double millisecondsSince(Clock::time_point start) {
@@ -65,6 +73,12 @@ float wrapAngle(float a) {
 
 glm::vec2 xz(const glm::vec3& p) { return {p.x, p.z}; }
 
+// How much an agent gives way: 1 walking at its preferred speed, up to
+// 1 + kHeldUpYield standing.
+float yieldWeight(glm::vec2 velocity, float preferredSpeed) {
+    return 1.0f + kHeldUpYield * std::max(0.0f, 1.0f - glm::length(velocity) / preferredSpeed);
+}
+
 } // namespace
 
 void Crowd::step() {
@@ -76,7 +90,7 @@ void Crowd::step() {
         mNavigation->expireHazards(mTime);
         const uint64_t densitySteps =
             std::max<uint64_t>(1, uint64_t(std::lround(mSettings.densityUpdateSeconds / mSettings.timeStep)));
-        if (mSteps % densitySteps == 0) mNavigation->updateDensity(*mBins, mAgents.position, mAgents.velocity);
+        if (mSteps % densitySteps == 0) splatDensity();
         mStats.fieldTilesSolved = mNavigation->solve();
     }
     const auto fieldsDone = Clock::now();
@@ -109,6 +123,23 @@ float Crowd::hashCellSize() const {
     const float area = float(mBins->occupiedTiles().size()) * tile * tile;
     const float perCell = mAgents.size() ? std::sqrt(2.0f * area / float(mAgents.size())) : smallest;
     return std::clamp(perCell, smallest, std::max(smallest, mSettings.neighbourRadius));
+}
+
+void Crowd::splatDensity() {
+    // Where each agent wants to go: down its field, unless it stays, flees,
+    // escapes or has nowhere to go (then its velocity says enough). Kept in
+    // the separation's scratch buffer, free until steer() fills it.
+    AgentState& st = *mState;
+    const CrowdAgents& a = mAgents;
+    const Navigation& nav = *mNavigation;
+    std::vector<glm::vec2>& intentions = st.nextVelocity;
+    core::parallelForRanges(uint32_t(a.size()), kGrain, mSettings.threads, [&](core::IndexRange range) {
+        for (uint32_t i = range.begin; i < range.end; ++i) {
+            const bool walking = !(st.flags[i] & (kStaying | kEscaping | kUnreachable)) && st.fleeTime[i] <= 0.0f;
+            intentions[i] = walking ? nav.field(a.goalGroup[i]).descent(xz(a.position[i])) : glm::vec2(0.0f);
+        }
+    });
+    mNavigation->updateDensity(*mBins, a.position, a.velocity, intentions);
 }
 
 void Crowd::reactToTerrain() {
@@ -160,6 +191,7 @@ void Crowd::steer() {
             if (walkable) flags |= kOnWalkable;
             const float speed = a.preferredSpeed[i];
             glm::vec2 preferred(0.0f);
+            bool stuck = false, walkingField = false;
             if (st.fleeTime[i] > 0.0f) {
                 const glm::vec2 away = p - st.spot[i];
                 const float length = glm::length(away);
@@ -183,10 +215,8 @@ void Crowd::steer() {
                 const PotentialField& field = nav.field(a.goalGroup[i]);
                 glm::vec2 direction = field.descent(p);
                 if (direction == glm::vec2(0.0f) && !field.goal().contains(p)) flags |= kUnreachable;
-                if (st.stuckTime[i] > s.stuckSeconds) {
-                    const bool left = uint32_t((st.stuckTime[i] - s.stuckSeconds) / kSidestepPeriod) & 1u;
-                    direction = rotate(direction, left ? -kSidestepAngle : kSidestepAngle);
-                }
+                stuck = st.stuckTime[i] > s.stuckSeconds;
+                walkingField = true;
                 const glm::ivec2 c = grid.cellOf(p);
                 preferred = direction * speed * grid.speedFactor(grid.index(uint32_t(c.x), uint32_t(c.y)));
             }
@@ -214,7 +244,7 @@ void Crowd::steer() {
                     nearDistance[k] = nearDistance[k - 1];
                     --k;
                 }
-                near[k] = {offset, a.velocity[j], a.radius[j]};
+                near[k] = {offset, a.velocity[j], a.radius[j], j};
                 nearDistance[k] = d;
             };
             if (!sparse) mHash->forEachNear(p, closeRadius, [&](uint32_t j, glm::vec2 q) { consider(j, q, -1.0f, closeRadius2); });
@@ -228,34 +258,54 @@ void Crowd::steer() {
             const float touch = a.radius[i] + mLargestRadius + 2.0f * maxStep;
             if (found > 0 && nearDistance[0] < touch * touch) flags |= kCrowded;
             st.flags[i] = flags;
-            // Keep right of oncoming walkers: the nearest ones, and a stream
-            // coming the other way a few metres ahead.
+            // Walking its field, an agent keeps right of those who want to
+            // come the other way just ahead (standing or walking): the more
+            // of them, the further right, up to a sidestep. Both sides turn
+            // the same way, so they pass instead of pressing into each
+            // other, and a crowd waiting at a passage moves aside for those
+            // coming out of it. (Fleeing, or walking off impassable ground,
+            // it takes the way out it has.) A stuck agent sidesteps: to the
+            // right too where others want to come through, else right and
+            // left in turn (a jam of its own side or at a wall has no side
+            // to prefer).
             const float preferredSpeed = glm::length(preferred);
-            if (preferredSpeed > 0.0f) {
+            if (walkingField && preferredSpeed > 0.0f) {
                 const glm::vec2 ahead = preferred / preferredSpeed;
-                float oncoming = 0.0f;
-                for (uint32_t k = 0; k < found; ++k)
-                    oncoming += glm::dot(near[k].offset, ahead) > 0.3f * glm::length(near[k].offset) &&
-                                glm::dot(near[k].velocity, ahead) < -0.3f * preferredSpeed;
-                float streamCount;
-                glm::vec2 stream;
-                cost.crowdAt(p + ahead * kStreamLookAhead, streamCount, stream);
-                if (streamCount > 0.0f)
-                    oncoming += std::clamp(-glm::dot(stream, ahead) / preferredSpeed, 0.0f, 8.0f);
-                if (oncoming > 0.0f) preferred = rotate(preferred, std::min(kMaxLaneShift, kLaneShift * oncoming));
+                const float oncoming = cost.oncoming(p + ahead * kLaneLookAhead, ahead);
+                float shift = std::min(kMaxLaneShift, kLaneShift * oncoming);
+                if (stuck) {
+                    const bool left = uint32_t((st.stuckTime[i] - s.stuckSeconds) / kSidestepPeriod) & 1u;
+                    shift = oncoming > kOncomingSide ? std::max(shift, kSidestepAngle)
+                                                     : (left ? -kSidestepAngle : kSidestepAngle);
+                }
+                if (shift != 0.0f) preferred = rotate(preferred, shift);
             }
-            const float maxSpeed = std::max(glm::length(preferred), 0.25f * speed);
+            // No faster than the walk clip plays without sliding.
+            const AgentGait gait = AgentGait::of(s, a.radius[i]);
+            if (const float wanted = glm::length(preferred); wanted > gait.fastest) preferred *= gait.fastest / wanted;
+            const float maxSpeed = std::min(std::max(glm::length(preferred), 0.25f * speed), gait.fastest);
             // Walls: the nearest points of the impassable cells within reach
-            // (none for an agent walking off impassable ground).
+            // (none for an agent walking off impassable ground), only where
+            // they face the agent: a face hidden behind the impassable cell
+            // next to it, or a corner inside a straight wall, is left to that
+            // cell's own face.
             uint32_t wallCount = 0;
             if (walkable) {
+                auto blocked = [&](int32_t ci, int32_t cj) {
+                    return !grid.inGrid(ci, cj) || !cost.passable(grid.index(uint32_t(ci), uint32_t(cj)));
+                };
                 const float wallReach = a.radius[i] + maxSpeed * kWallHorizon;
                 const glm::ivec2 c0 = grid.cellOf(p - wallReach), c1 = grid.cellOf(p + wallReach);
                 for (int32_t cj = c0.y; cj <= c1.y; ++cj)
                     for (int32_t ci = c0.x; ci <= c1.x; ++ci) {
-                        if (grid.inGrid(ci, cj) && cost.passable(grid.index(uint32_t(ci), uint32_t(cj)))) continue;
+                        if (!blocked(ci, cj)) continue;
                         const glm::vec2 lo = glm::vec2(float(ci), float(cj)) * grid.cellSize();
-                        const glm::vec2 offset = glm::clamp(p, lo, lo + grid.cellSize()) - p;
+                        const glm::vec2 hi = lo + grid.cellSize();
+                        const int32_t sx = p.x < lo.x ? -1 : p.x > hi.x ? 1 : 0;
+                        const int32_t sz = p.y < lo.y ? -1 : p.y > hi.y ? 1 : 0;
+                        if ((sx == 0 && sz == 0) || (sx != 0 && blocked(ci + sx, cj)) || (sz != 0 && blocked(ci, cj + sz)))
+                            continue;
+                        const glm::vec2 offset = glm::clamp(p, lo, hi) - p;
                         const float d = glm::dot(offset, offset);
                         if (d > wallReach * wallReach || (wallCount == kMaxWalls && d >= wallDistance[kMaxWalls - 1]))
                             continue;
@@ -265,9 +315,18 @@ void Crowd::steer() {
                             wallDistance[k] = wallDistance[k - 1];
                             --k;
                         }
-                        walls[k] = {offset};
+                        walls[k] = {offset, sx != 0 && sz != 0};
                         wallDistance[k] = d;
                     }
+            }
+            // Who gives way: an agent held up (slower than it wants) more than
+            // one walking freely, so a stream comes through a waiting crowd
+            // rather than the crowd pressing into the stream.
+            const float weight = yieldWeight(a.velocity[i], a.preferredSpeed[i]);
+            for (uint32_t k = 0; k < found; ++k) {
+                const uint32_t j = near[k].agent;
+                const float other = yieldWeight(a.velocity[j], a.preferredSpeed[j]);
+                near[k].share = weight / (weight + other);
             }
             AvoidanceQuery query{a.velocity[i], preferred, maxSpeed, a.radius[i], s.comfortMargin,
                                  s.horizonSeconds, kWallHorizon, s.timeStep};
@@ -275,7 +334,8 @@ void Crowd::steer() {
                                                      std::span<const WallPoint>(walls, wallCount), lines);
             const glm::vec2 delta = chosen - a.velocity[i];
             const float change = glm::length(delta);
-            st.nextVelocity[i] = change > maxDelta ? a.velocity[i] + delta * (maxDelta / change) : chosen;
+            const glm::vec2 limited = change > maxDelta ? a.velocity[i] + delta * (maxDelta / change) : chosen;
+            st.nextVelocity[i] = gait.walkable(limited, chosen);
         }
     });
 }
@@ -291,20 +351,10 @@ void Crowd::integrate() {
             const glm::vec2 v = st.nextVelocity[i];
             a.velocity[i] = v;
             st.moved[i] = xz(a.position[i]) + v * dt;
-            const float speed = glm::length(v);
-            if (speed > 0.05f) {
+            if (v != glm::vec2(0.0f)) {
                 const float turn = wrapAngle(std::atan2(v.x, v.y) - a.heading[i]);
                 a.heading[i] = wrapAngle(a.heading[i] + std::clamp(turn, -maxTurn, maxTurn));
             }
-            if (speed > s.walkAbove) a.clip[i] = AgentClip::Walk;
-            else if (speed < s.idleBelow) a.clip[i] = AgentClip::Idle;
-            // The walk phase follows the ground covered, so feet do not slide;
-            // a bigger agent takes proportionally longer strides.
-            const float advance = a.clip[i] == AgentClip::Walk
-                                      ? speed * dt / (s.walkStrideLength * a.radius[i] / s.strideRadius)
-                                      : dt / s.idleCycleSeconds;
-            a.phase[i] += advance;
-            a.phase[i] -= std::floor(a.phase[i]);
             st.fleeTime[i] = std::max(0.0f, st.fleeTime[i] - dt);
         }
     });
@@ -427,16 +477,25 @@ void Crowd::finishStep() {
     core::parallelForRanges(uint32_t(a.size()), kGrain, s.threads, [&](core::IndexRange range) {
         for (uint32_t i = range.begin; i < range.end; ++i) {
             const glm::vec2 p = st.moved[i];
+            // The clip follows the ground actually covered (separation's
+            // pushes included), so feet stay planted.
+            AgentGait::of(s, a.radius[i])
+                .advance(s, a.velocity[i] != glm::vec2(0.0f), glm::distance(p, xz(a.position[i])), a.clip[i], a.phase[i]);
             a.position[i] = glm::vec3(p.x, mTerrain.heightAt(p.x, p.y), p.y);
             st.flags[i] &= ~kArrived;
             if (!(st.flags[i] & kStaying) && nav.field(a.goalGroup[i]).goal().contains(p)) arrive(i);
             // Stuck: wanting to walk but not getting stuckProgress away from
             // where it last was. Measured on the ground, not on the
             // potential, which rises under an agent as the crowd ahead of
-            // it thickens.
-            const bool settled = (st.flags[i] & kStaying) && glm::distance(p, st.spot[i]) <= kStaySpotReach;
-            if (settled || (st.flags[i] & (kEscaping | kUnreachable)) || st.fleeTime[i] > 0.0f ||
-                glm::distance(p, st.anchor[i]) >= s.stuckProgress) {
+            // it thickens. An agent making for its spot in a Stay goal must
+            // get closer to it: one that walks round a spot others stand on
+            // (it cannot creep, only walk or stand) is stuck too.
+            const bool staying = st.flags[i] & kStaying;
+            const float toSpot = glm::distance(p, st.spot[i]);
+            const bool progress = staying ? toSpot <= glm::distance(st.anchor[i], st.spot[i]) - 0.5f * s.stuckProgress
+                                          : glm::distance(p, st.anchor[i]) >= s.stuckProgress;
+            if ((staying && toSpot <= kStaySpotReach) || (st.flags[i] & (kEscaping | kUnreachable)) ||
+                st.fleeTime[i] > 0.0f || progress) {
                 st.stuckTime[i] = 0.0f;
                 st.anchor[i] = p;
             } else {

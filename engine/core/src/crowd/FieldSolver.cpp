@@ -23,25 +23,53 @@ constexpr float kSqrt2 = 1.41421356f;
 // and the update on the diagonals, a grid turned by 45 degrees; the lower
 // wins). The diagonal stencil removes most of the axis-only scheme's error
 // on curved fronts, which grows with distance along the diagonals.
-template <class Costs>
+//
+// Where each axis costs the same both ways, the neighbour cheaper to reach
+// on each axis gives the lowest value. Where the crowd makes a direction
+// dearer than its opposite (kDirected), every quadrant is tried and the
+// lowest taken: choosing per axis by the one-sided values jumps between two
+// solutions as the neighbours' values cross, the update is then not
+// monotone, and sweeps that replace values can cycle without settling (a
+// counterflow's costs kept the first solve of a 2,000-agent crowd going to
+// the solver's cap).
+template <bool kDirected, class Costs>
 float updateCell(const float* at, const Costs& c) {
-    // Per axis, the neighbour cheapest to reach it by.
-    const bool useLeft = at[-1] + c.axis[kMinusX] <= at[1] + c.axis[kPlusX];
-    const bool useDown = at[-kStride] + c.axis[kMinusZ] <= at[kStride] + c.axis[kPlusZ];
-    const int x = useLeft ? kMinusX : kPlusX, z = useDown ? kMinusZ : kPlusZ;
-    const float u = eikonalUpdate(at[useLeft ? -1 : 1], c.axis[x], c.axisInverse[x],
-                                  at[useDown ? -kStride : kStride], c.axis[z], c.axisInverse[z]);
+    const float x[2] = {at[-1], at[1]}, z[2] = {at[-kStride], at[kStride]};
     // Diagonals, never squeezing between two unreachable cells (a corner
-    // of a wall).
-    const float mm = at[-1] < kInf || at[-kStride] < kInf ? at[-kStride - 1] : kInf;
-    const float pp = at[1] < kInf || at[kStride] < kInf ? at[kStride + 1] : kInf;
-    const float mp = at[-1] < kInf || at[kStride] < kInf ? at[kStride - 1] : kInf;
-    const float pm = at[1] < kInf || at[-kStride] < kInf ? at[-kStride + 1] : kInf;
-    const int one = mm + c.diagonal[0] <= pp + c.diagonal[1] ? 0 : 1;
-    const int two = mp + c.diagonal[2] <= pm + c.diagonal[3] ? 2 : 3;
-    const float diagonal = eikonalUpdate(one == 0 ? mm : pp, c.diagonal[one], c.diagonalInverse[one],
-                                         two == 2 ? mp : pm, c.diagonal[two], c.diagonalInverse[two]);
-    return std::min(u, diagonal);
+    // of a wall): (-x,-z), (+x,+z), (-x,+z), (+x,-z).
+    const float d[4] = {at[-1] < kInf || at[-kStride] < kInf ? at[-kStride - 1] : kInf,
+                        at[1] < kInf || at[kStride] < kInf ? at[kStride + 1] : kInf,
+                        at[-1] < kInf || at[kStride] < kInf ? at[kStride - 1] : kInf,
+                        at[1] < kInf || at[-kStride] < kInf ? at[-kStride + 1] : kInf};
+    if constexpr (!kDirected) {
+        // Per axis, the neighbour cheapest to reach it by.
+        const int sx = x[0] + c.axis[kMinusX] <= x[1] + c.axis[kPlusX] ? 0 : 1;
+        const int sz = z[0] + c.axis[kMinusZ] <= z[1] + c.axis[kPlusZ] ? 0 : 1;
+        const float u = eikonalUpdate(x[sx], c.axis[kMinusX + sx], c.axisInverse[kMinusX + sx], z[sz],
+                                      c.axis[kMinusZ + sz], c.axisInverse[kMinusZ + sz]);
+        const int one = d[0] + c.diagonal[0] <= d[1] + c.diagonal[1] ? 0 : 1;
+        const int two = d[2] + c.diagonal[2] <= d[3] + c.diagonal[3] ? 2 : 3;
+        return std::min(u, eikonalUpdate(d[one], c.diagonal[one], c.diagonalInverse[one], d[two], c.diagonal[two],
+                                         c.diagonalInverse[two]));
+    } else {
+        // Both neighbours of an axis only where its two directions differ.
+        const bool bothX = c.axis[kMinusX] != c.axis[kPlusX], bothZ = c.axis[kMinusZ] != c.axis[kPlusZ];
+        const bool bothOne = c.diagonal[0] != c.diagonal[1], bothTwo = c.diagonal[2] != c.diagonal[3];
+        const int sx0 = bothX || x[0] + c.axis[kMinusX] <= x[1] + c.axis[kPlusX] ? 0 : 1, sx1 = bothX ? 1 : sx0;
+        const int sz0 = bothZ || z[0] + c.axis[kMinusZ] <= z[1] + c.axis[kPlusZ] ? 0 : 1, sz1 = bothZ ? 1 : sz0;
+        const int o0 = bothOne || d[0] + c.diagonal[0] <= d[1] + c.diagonal[1] ? 0 : 1, o1 = bothOne ? 1 : o0;
+        const int t0 = bothTwo || d[2] + c.diagonal[2] <= d[3] + c.diagonal[3] ? 2 : 3, t1 = bothTwo ? 3 : t0;
+        float u = kInf;
+        for (int sx = sx0; sx <= sx1; ++sx)
+            for (int sz = sz0; sz <= sz1; ++sz)
+                u = std::min(u, eikonalUpdate(x[sx], c.axis[kMinusX + sx], c.axisInverse[kMinusX + sx], z[sz],
+                                              c.axis[kMinusZ + sz], c.axisInverse[kMinusZ + sz]));
+        for (int one = o0; one <= o1; ++one)
+            for (int two = t0; two <= t1; ++two)
+                u = std::min(u, eikonalUpdate(d[one], c.diagonal[one], c.diagonalInverse[one], d[two], c.diagonal[two],
+                                              c.diagonalInverse[two]));
+        return u;
+    }
 }
 
 // Change between two potentials that counts towards settling: absolute, less
@@ -85,10 +113,11 @@ void FieldSolver::prepare(Job& job, const PotentialField& field, const CostField
                 continue;
             }
             job.fixed[k] = field.fixedValue(i, j, c);
-            job.mode[k] = job.fixed[k] >= 0.0f ? kFixed : kSolve;
             CellCosts& costs = job.costs[k];
             float ch[4];
             for (int d = 0; d < 4; ++d) ch[d] = (directed ? (*directed)[k][d] : c) * cell;
+            const bool oneWayDearer = ch[kMinusX] != ch[kPlusX] || ch[kMinusZ] != ch[kPlusZ];
+            job.mode[k] = job.fixed[k] >= 0.0f ? kFixed : oneWayDearer ? kSolveDirected : kSolve;
             const float diagonal[4] = {ch[kMinusX] + ch[kMinusZ], ch[kPlusX] + ch[kPlusZ], ch[kMinusX] + ch[kPlusZ],
                                        ch[kPlusX] + ch[kMinusZ]};
             for (int d = 0; d < 4; ++d) {
@@ -127,8 +156,10 @@ void FieldSolver::sweep(std::span<Job* const> jobs) const {
                         float* at = &job.phi[(y + 1) * kWindow + x + 1];
                         // Replacing (not taking the minimum) lets values
                         // rise when costs rose.
-                        const float u = mode == kSolve ? updateCell(at, job.costs[k])
-                                        : mode == kFixed ? job.fixed[k] : kInf;
+                        const float u = mode == kSolve           ? updateCell<false>(at, job.costs[k])
+                                        : mode == kSolveDirected ? updateCell<true>(at, job.costs[k])
+                                        : mode == kFixed         ? job.fixed[k]
+                                                                 : kInf;
                         change[q] = std::max(change[q], settlingChange(u, *at));
                         *at = u;
                     }

@@ -56,7 +56,7 @@ private:
         float axis[4], axisInverse[4];         // -x, +x, -z, +z
         float diagonal[4], diagonalInverse[4]; // (-x,-z), (+x,+z), (-x,+z), (+x,-z)
     };
-    enum CellMode : uint8_t { kSolve, kFixed, kWall, kOutside };
+    enum CellMode : uint8_t { kSolve, kSolveDirected, kFixed, kWall, kOutside };
 
     /// One tile of one field in a pass: its window (the tile plus a ring of
     /// ghost cells, row stride kWindow, full size even for a tile the grid's

@@ -89,25 +89,36 @@ void Navigation::expireHazards(double now) {
 }
 
 void Navigation::updateDensity(const AgentBins& bins, std::span<const glm::vec3> positions,
-                               std::span<const glm::vec2> velocities) {
-    // Recount where agents are and where they were (those tiles may have
-    // emptied); the 3 x 3 blur reaches one cell into the tiles around.
+                               std::span<const glm::vec2> velocities, std::span<const glm::vec2> intentions) {
+    // Recount the tiles agents stand on or may anticipate walking into (the
+    // tiles around), and those that held samples at the last splat (they
+    // may have emptied).
+    const uint32_t tx = mGrid.tilesX(), tz = mGrid.tilesZ();
+    auto around = [&](std::span<const uint32_t> centres, std::vector<uint32_t>& out) {
+        for (uint32_t t : centres) {
+            const uint32_t x = t % tx, z = t / tx;
+            for (uint32_t nz = z ? z - 1 : 0; nz <= std::min(z + 1, tz - 1); ++nz)
+                for (uint32_t nx = x ? x - 1 : 0; nx <= std::min(x + 1, tx - 1); ++nx) out.push_back(nz * tx + nx);
+        }
+    };
     std::vector<uint32_t> recount(mDensityTiles);
-    recount.insert(recount.end(), bins.occupiedTiles().begin(), bins.occupiedTiles().end());
+    around(bins.occupiedTiles(), recount);
     sortUnique(recount);
     // Each tile's recount writes only that tile's samples.
     core::parallelFor(uint32_t(recount.size()), mSettings.threads, [&](uint32_t k) {
-        mCost.recountTile(recount[k], bins.agentsIn(recount[k]), positions, velocities);
+        mCost.recountTile(recount[k], bins, positions, velocities, intentions);
     });
-    mDensityTiles.assign(bins.occupiedTiles().begin(), bins.occupiedTiles().end());
-
+    // The costs that can have changed: around the tiles that held samples
+    // before or hold them now (the box filter and the look-ahead reach one
+    // tile).
+    std::vector<uint32_t> changed(mDensityTiles);
+    mDensityTiles.clear();
+    for (uint32_t t : recount)
+        if (mCost.hasSamples(t)) mDensityTiles.push_back(t);
+    changed.insert(changed.end(), mDensityTiles.begin(), mDensityTiles.end());
+    sortUnique(changed);
     std::vector<uint32_t> tiles;
-    const uint32_t tx = mGrid.tilesX(), tz = mGrid.tilesZ();
-    for (uint32_t t : recount) {
-        const uint32_t x = t % tx, z = t / tx;
-        for (uint32_t nz = z ? z - 1 : 0; nz <= std::min(z + 1, tz - 1); ++nz)
-            for (uint32_t nx = x ? x - 1 : 0; nx <= std::min(x + 1, tx - 1); ++nx) tiles.push_back(nz * tx + nx);
-    }
+    around(changed, tiles);
     sortUnique(tiles);
     recompute(tiles);
 }

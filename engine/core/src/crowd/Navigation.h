@@ -37,10 +37,11 @@ public:
     Hazard addCrater(const terrain::Terrain& terrain, const terrain::CraterSplat& splat, double now);
     /// Lifts the hazards expired at `now`.
     void expireHazards(double now);
-    /// Splats the agents' density into the cost (tiles occupied now or at
-    /// the last splat).
+    /// Splats the agents' density, velocities and intended directions (unit,
+    /// or zero for agents that want to go nowhere) into the cost (tiles
+    /// occupied now or at the last splat).
     void updateDensity(const AgentBins& bins, std::span<const glm::vec3> positions,
-                       std::span<const glm::vec2> velocities);
+                       std::span<const glm::vec2> velocities, std::span<const glm::vec2> intentions);
     /// Spends up to the settings' tile budget settling the fields; returns
     /// the tile solves done.
     uint32_t solve();
@@ -64,7 +65,7 @@ private:
     CostField mCost;
     std::vector<std::unique_ptr<PotentialField>> mFields;
     FieldSolver mSolver;
-    std::vector<uint32_t> mDensityTiles; ///< occupied at the last density splat
+    std::vector<uint32_t> mDensityTiles; ///< holding samples since the last density splat
 };
 
 } // namespace tessera::crowd

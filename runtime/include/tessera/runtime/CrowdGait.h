@@ -33,7 +33,7 @@ struct CrowdGait {
     float idleCycleSeconds = 2.5f;       ///< the idle clip's duration
     std::vector<CreatureGait> creatures; ///< one per asset, in CharacterAssets order
 
-    /// Sets the crowd's stride and idle cycle to this gait's.
+    /// Sets the crowd's stride, walk pace and idle cycle to this gait's.
     void apply(crowd::CrowdSettings& settings) const;
 };
 

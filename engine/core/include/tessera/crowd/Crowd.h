@@ -116,6 +116,7 @@ private:
     Status spawn(std::span<const SpawnPattern> spawns);
     float hashCellSize() const;
     void reactToTerrain();
+    void splatDensity();
     void steer();
     void integrate();
     void separate();

@@ -77,18 +77,23 @@ struct CrowdSettings {
     /// Height of an agent's box for culling (metres above its feet).
     float agentHeight = 2.0f;
 
-    // --- Animation ----------------------------------------------------------
+    // --- Animation ---------------------------------------------------------
     /// Ground covered per walk-clip cycle at radius `strideRadius` (metres),
     /// e.g. character::measureStride of the drawn model; an agent's stride
-    /// scales with its radius. The walk phase advances by distance / stride,
-    /// so feet do not slide.
+    /// scales with its radius. The walk phase advances by the ground covered
+    /// / stride, so feet stay planted.
     float walkStrideLength = 1.4f;
     float strideRadius = 0.4f;
+    /// Length of one walk-clip cycle (seconds): the clip plays at its own
+    /// pace at stride / walkCycleSeconds metres per second.
+    float walkCycleSeconds = 1.1f;
+    /// The walk clip plays between these multiples of its own pace. As the
+    /// phase follows the ground, an agent walks between minWalkRate and
+    /// maxWalkRate times its stride / walkCycleSeconds, or stands (idle).
+    float minWalkRate = 0.4f;
+    float maxWalkRate = 2.2f;
     /// Length of one idle-clip cycle (seconds).
     float idleCycleSeconds = 2.5f;
-    /// Speeds (m/s) at which an agent switches from idle to walk and back.
-    float walkAbove = 0.3f;
-    float idleBelow = 0.15f;
 
     // --- Progress -----------------------------------------------------------
     /// An agent that wants to walk but has not got `stuckProgress` metres

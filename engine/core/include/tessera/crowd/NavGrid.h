@@ -6,6 +6,7 @@
 
 #include "tessera/terrain/Terrain.h"
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -25,10 +26,10 @@ struct CellRect {
 /// solver, of density splatting and of the crowd's bounds hierarchy).
 ///
 /// Terrain cost is the cost per metre of walking on the ground: 1 on the
-/// flat, rising as 1 / speedFactor with slope, infinite where the ground
-/// anywhere in the cell (or one height sample around it, so the
-/// central-difference normal agrees) is steeper than the limit. Positions
-/// outside the terrain are impassable.
+/// flat, rising as 1 / speedFactor with slope, infinite where the slope an
+/// agent measures (Terrain::normalAt's central differences) anywhere in the
+/// cell is steeper than the limit. Positions outside the terrain are
+/// impassable.
 class NavGrid {
 public:
     static constexpr uint32_t kTileCells = 16;
@@ -49,7 +50,11 @@ public:
     glm::vec2 worldSize() const { return mWorldSize; }
 
     /// Cell coordinates of world point `p` (may lie outside the grid).
-    glm::ivec2 cellOf(glm::vec2 p) const;
+    /// (Inline, by the inverse of the cell size: every agent looks up cells
+    /// many times a step.)
+    glm::ivec2 cellOf(glm::vec2 p) const {
+        return {int32_t(std::floor(p.x * mInverseCellSize)), int32_t(std::floor(p.y * mInverseCellSize))};
+    }
     bool inGrid(int32_t i, int32_t j) const { return i >= 0 && j >= 0 && uint32_t(i) < mWidth && uint32_t(j) < mHeight; }
     uint32_t index(uint32_t i, uint32_t j) const { return j * mWidth + i; }
     glm::vec2 cellCenter(uint32_t i, uint32_t j) const { return (glm::vec2(float(i), float(j)) + 0.5f) * mCellSize; }
@@ -77,6 +82,7 @@ private:
 
     uint32_t mWidth = 0, mHeight = 0, mTilesX = 0, mTilesZ = 0;
     float mCellSize = 1.0f;
+    float mInverseCellSize = 1.0f;
     float mMaxSlope = 1.0f;
     float mSpeedAtLimit = 0.35f;
     glm::vec2 mWorldSize{0.0f};
