@@ -142,7 +142,16 @@ Result<std::unique_ptr<MeshshaderCrowdResources>> MeshshaderCrowdResources::crea
         const uint32_t end =
             i + 1 < desc.characters.size() ? baked.characterClipBase[i + 1] : uint32_t(baked.clips.size());
         std::array<MeshletRange, 2> ranges;
-        const character::CageMesh* meshes[2] = {desc.characters[i].cage, desc.characters[i].farMesh};
+        // The middle tier's meshlets cover its triangles (the cage's, or the
+        // simplified ones over the same vertices).
+        const backend::CrowdCharacterDesc& c = desc.characters[i];
+        character::CageMesh middle;
+        if (!c.middleIndices.empty()) {
+            middle.vertices = c.cage->vertices;
+            middle.bindings = c.cage->bindings;
+            middle.indices.assign(c.middleIndices.begin(), c.middleIndices.end());
+        }
+        const character::CageMesh* meshes[2] = {c.middleIndices.empty() ? c.cage : &middle, c.farMesh};
         for (int m = 0; m < 2; ++m) {
             std::vector<glm::uvec4> texels;
             character::appendBakedVertices(*meshes[m], baked, first, end, range, texels);

@@ -126,7 +126,9 @@ public:
             const character::CharacterAsset* asset = c.character.id < mCharacters.size() ? mCharacters[c.character.id]
                                                                                          : nullptr;
             if (!asset) return fail("createCrowd: character ", std::to_string(c.character.id), " does not exist");
-            creatures.push_back({asset->cage.triangleCount(), c.farMesh->triangleCount(), c.levelPerPixel});
+            const uint32_t middle = c.middleIndices.empty() ? asset->cage.triangleCount()
+                                                            : uint32_t(c.middleIndices.size() / 3);
+            creatures.push_back({asset->cage.triangleCount(), middle, c.farMesh->triangleCount(), c.levelPerPixel});
         }
         mCrowds.push_back(std::make_unique<NullCrowd>(std::move(creatures), uint32_t(desc.animation->clips.size()),
                                                       desc.maxInstances, desc.maxIds));

@@ -18,6 +18,7 @@ public:
     /// What one creature's tiers cost.
     struct Creature {
         uint32_t cageTriangles = 0;
+        uint32_t middleTriangles = 0;
         uint32_t farTriangles = 0;
         float levelPerPixel = 0.01f;
     };

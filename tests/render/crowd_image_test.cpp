@@ -1,5 +1,6 @@
-// The instanced crowd's images: a tier change cross-fades (fewer pixels
-// change in any frame than an instant switch changes), the near tier has no
+// The instanced crowd's images: a tier change cross-fades (a small share of
+// the creature changes tier in any frame, where an instant switch changes
+// all of it), the near tier has no
 // cracks at any level on any backend, and the three backends draw the same
 // crowd within the terrain's parity tolerance. All under the validation
 // layer, on the 2 km crop of the content terrain.
@@ -21,16 +22,18 @@ using namespace tessera::test;
 
 namespace {
 
-/// Pixels whose colour differs by more than `threshold` (any channel).
-size_t changedPixels(const Rgba8Image& a, const Rgba8Image& b, int threshold) {
-    size_t changed = 0;
-    for (size_t i = 0; i + 3 < a.pixels.size() && i + 3 < b.pixels.size(); i += 4)
-        for (int c = 0; c < 3; ++c)
-            if (std::abs(int(a.pixels[i + c]) - int(b.pixels[i + c])) > threshold) {
-                ++changed;
-                break;
-            }
-    return changed;
+/// The share of the creature's pixels (those not black) tinted as the near
+/// tier (green: green over 1.6 times red; the middle tier's yellow has red
+/// close to green).
+double nearShare(const Rgba8Image& image) {
+    size_t near = 0, creature = 0;
+    for (size_t i = 0; i + 3 < image.pixels.size(); i += 4) {
+        const int r = image.pixels[i], g = image.pixels[i + 1], b = image.pixels[i + 2];
+        if (r + g + b < 30) continue;
+        ++creature;
+        near += 10 * g > 16 * r;
+    }
+    return creature ? double(near) / double(creature) : 0.0;
 }
 
 struct Recording {
@@ -92,11 +95,13 @@ Recording recordDolly(const std::string& name, const std::vector<std::string>& e
     return r;
 }
 
-/// The most pixels any frame changes from the one before.
-size_t worstFrameChange(const Recording& r) {
-    size_t worst = 0;
+/// The largest change of the near tier's share of the creature from one
+/// frame to the next (the creature's own motion, walking as the camera
+/// dollies, changes many pixels a frame but not their tier).
+double worstTierStep(const Recording& r) {
+    double worst = 0.0;
     for (size_t f = 1; f < r.frames.size(); ++f)
-        worst = std::max(worst, changedPixels(r.frames[f - 1], r.frames[f], 24));
+        worst = std::max(worst, std::abs(nearShare(r.frames[f]) - nearShare(r.frames[f - 1])));
     return worst;
 }
 
@@ -105,7 +110,7 @@ size_t worstFrameChange(const Recording& r) {
 // The dolly takes the agent from the far tier through the middle one to the
 // near one. Switching at once recolours (and reshapes) the whole creature in
 // one frame; the dithered cross-fade spreads that over its frames, so no
-// frame changes as many pixels.
+// frame moves more than a small share of it to the other tier.
 TEST(CrowdImages, ATierChangeCrossFadesRatherThanPops) {
     constexpr uint32_t kFrames = 48;
     const Recording instant = recordDolly("instant", {"--lod-fade", "0"}, kFrames);
@@ -115,13 +120,12 @@ TEST(CrowdImages, ATierChangeCrossFadesRatherThanPops) {
     ASSERT_EQ(faded.result.exitCode, 0) << faded.command << "\n" << faded.result.output;
     ASSERT_EQ(instant.frames.size(), kFrames);
     ASSERT_EQ(faded.frames.size(), kFrames);
-    const size_t popped = worstFrameChange(instant), blended = worstFrameChange(faded);
-    std::cout << "[crowd fade] the worst frame changes " << popped << " px switching at once, " << blended
-              << " px cross-fading over 8 frames\n";
-    // The creature covers 200 to 600 pixels: an instant switch recolours it
-    // at once, well above the slow dolly's own change.
-    EXPECT_GT(popped, 200u) << "no tier change seen: " << instant.command;
-    EXPECT_LT(double(blended), 0.6 * double(popped)) << faded.command;
+    const double popped = worstTierStep(instant), blended = worstTierStep(faded);
+    std::cout << "[crowd fade] the near tier's share of the creature's pixels changes by at most " << popped
+              << " in a frame switching at once, " << blended << " cross-fading over 8 frames\n";
+    // Measured: 0.995 at once; 0.13 faded (about an eighth a frame).
+    EXPECT_GT(popped, 0.9) << "no tier change seen: " << instant.command;
+    EXPECT_LT(blended, 0.25) << faded.command;
 }
 
 // The near tier drawn instanced at every level has no cracks: agents on

@@ -43,7 +43,7 @@ LodInstance at(float distance, uint32_t id, float x = 0.0f) {
 
 std::vector<LodCharacter> creature() {
     // 5,000 cage triangles, a 3 cm mean edge, a 300-triangle far mesh.
-    return {{LodCharacter::levelPerPixelFor(0.03f, kRadius, 1.0f), 5000, 300}};
+    return {{LodCharacter::levelPerPixelFor(0.03f, kRadius, 1.0f), 5000, 5000, 300}};
 }
 
 uint32_t tierOf(const lod::LodFrame& frame, uint32_t instance) {
@@ -201,21 +201,46 @@ TEST(LodManager, OneHugeInstanceGetsALowerLevelCapNotAnOverrun) {
     EXPECT_EQ(g.counts[TS_LOD_MIDDLE].instances, 1u);
 }
 
-TEST(LodManager, MiddleAndFarCapsDropTheSmallest) {
+TEST(LodManager, TheFarCapDropsTheSmallest) {
     LodPolicy policy = noFade();
-    policy.budget.maxNearInstances = 0;
-    policy.budget.maxMiddleInstances = 5;
     policy.budget.maxFarInstances = 10;
     LodManager lods(policy, 1);
     const auto characters = creature();
-    std::vector<LodInstance> instances;
-    for (uint32_t i = 0; i < 30; ++i) instances.push_back(at(3.0f + float(i), i));
+    std::vector<LodInstance> instances; // 5 middle (40 px and more), 25 far
+    for (uint32_t i = 0; i < 30; ++i) instances.push_back(at(distanceFor(61.0f - 2.0f * float(i)), i));
     const lod::LodFrame& f = lods.update(instances, characters, view());
-    EXPECT_EQ(f.counts[TS_LOD_NEAR].instances, 0u);
-    EXPECT_EQ(f.counts[TS_LOD_MIDDLE].instances, 5u);
+    EXPECT_EQ(f.counts[TS_LOD_MIDDLE].instances, 11u);
     EXPECT_EQ(f.counts[TS_LOD_FAR].instances, 10u);
-    EXPECT_EQ(f.dropped, 15u);
-    for (const lod::LodDraw& d : f.tiers[TS_LOD_FAR]) EXPECT_LT(d.instance, 15u);
+    EXPECT_EQ(f.dropped, 9u);
+    for (const lod::LodDraw& d : f.tiers[TS_LOD_FAR]) EXPECT_LT(d.instance, 21u);
+}
+
+TEST(LodManager, ASpentBudgetNeverHandsAMeshMadeForFewerPixels) {
+    // The near budget's demotions take the middle tier (the cage holds at
+    // any size); the middle budget's take the far mesh only below the far
+    // threshold, its size: creatures above it stay in the middle tier,
+    // over the budget (docs/CROWD.md 6.2, "Fallbacks").
+    LodPolicy policy = noFade();
+    policy.budget.maxNearInstances = 1;
+    policy.budget.maxMiddleInstances = 6;
+    LodManager lods(policy, 1);
+    const auto characters = creature();
+    std::vector<LodInstance> instances;
+    for (uint32_t i = 0; i < 4; ++i) instances.push_back(at(distanceFor(200.0f + 10.0f * float(i)), i)); // near
+    for (uint32_t i = 4; i < 12; ++i) instances.push_back(at(distanceFor(45.0f + 5.0f * float(i)), i));  // middle
+    lods.update(instances, characters, view());
+    EXPECT_EQ(lods.frame().counts[TS_LOD_NEAR].instances, 1u);
+    EXPECT_EQ(tierOf(lods.frame(), 3), TS_LOD_NEAR) << "the largest is tessellated";
+    EXPECT_EQ(lods.frame().counts[TS_LOD_MIDDLE].instances, 11u) << "every other one above the far threshold";
+    EXPECT_EQ(lods.frame().counts[TS_LOD_FAR].instances, 0u);
+    // Shrunk into the hysteresis band (34 to 40 px), those kept in the
+    // middle tier by it are the budget's to demote: the smallest go, the
+    // three demoted from near taking half the budget.
+    for (uint32_t i = 4; i < 12; ++i) instances[i] = at(distanceFor(34.5f + 0.5f * float(i - 4)), i);
+    const lod::LodFrame& f = lods.update(instances, characters, view());
+    EXPECT_EQ(f.counts[TS_LOD_MIDDLE].instances, 3u + 3u) << "three demoted from near, the three largest shrunk";
+    EXPECT_EQ(f.counts[TS_LOD_FAR].instances, 5u);
+    for (uint32_t i = 9; i < 12; ++i) EXPECT_EQ(tierOf(f, i), TS_LOD_MIDDLE) << i;
 }
 
 TEST(LodManager, AMovingCameraNeverExceedsTheBudgetAndEveryPathAgrees) {
@@ -241,8 +266,15 @@ TEST(LodManager, AMovingCameraNeverExceedsTheBudgetAndEveryPathAgrees) {
         const lod::LodFrame& f = lods.update(instances, characters, view(c));
         EXPECT_LE(f.counts[TS_LOD_NEAR].instances, policy.budget.maxNearInstances);
         EXPECT_LE(f.counts[TS_LOD_NEAR].triangles, policy.budget.maxTessellatedTriangles);
-        EXPECT_LE(f.counts[TS_LOD_MIDDLE].instances, policy.budget.maxMiddleInstances);
         EXPECT_LE(f.counts[TS_LOD_FAR].instances, policy.budget.maxFarInstances);
+        // The middle budget may be exceeded, but only by creatures the far
+        // mesh is not made for (at least the far threshold).
+        uint32_t aboveFar = 0;
+        for (const lod::LodDraw& d : f.tiers[TS_LOD_MIDDLE])
+            aboveFar += !d.fadingOut && shader::tsLodPixels(instances[d.instance].sphere, f.params) >= policy.farPixels;
+        EXPECT_LE(f.counts[TS_LOD_MIDDLE].instances, std::max(policy.budget.maxMiddleInstances, aboveFar + f.counts[TS_LOD_MIDDLE].fading));
+        for (const lod::LodDraw& d : f.tiers[TS_LOD_FAR])
+            if (!d.fadingOut) EXPECT_LT(shader::tsLodPixels(instances[d.instance].sphere, f.params), policy.farPixels);
         demoted += f.budgetDemoted;
         dropped += f.dropped;
         nearFrames += f.counts[TS_LOD_NEAR].instances > 0;

@@ -24,7 +24,7 @@ void reportCrowdCounts(GpuCrowd& crowd, uint32_t slot, backend::FrameReport& rep
             const uint32_t n = listCount(args, tier, c);
             const GpuCrowd::Creature& k = crowd.creatures()[c];
             report.crowdInstances[tier] += n;
-            report.crowdTriangles[tier] += uint64_t(n) * (tier == TS_LOD_FAR ? k.farTriangles : k.cageTriangles);
+            report.crowdTriangles[tier] += uint64_t(n) * k.tierTriangles(tier);
         }
 }
 

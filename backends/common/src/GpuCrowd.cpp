@@ -54,6 +54,13 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
         creature.cageTriangles = character->triangleCount();
         vertices.insert(vertices.end(), character->gpuVertices().begin(), character->gpuVertices().end());
         indices.insert(indices.end(), character->cageIndices().begin(), character->cageIndices().end());
+        creature.middleFirstIndex = creature.cageFirstIndex;
+        creature.middleTriangles = creature.cageTriangles;
+        if (!c.middleIndices.empty()) {
+            creature.middleFirstIndex = uint32_t(indices.size());
+            creature.middleTriangles = uint32_t(c.middleIndices.size() / 3);
+            indices.insert(indices.end(), c.middleIndices.begin(), c.middleIndices.end());
+        }
         creature.farFirstVertex = uint32_t(vertices.size());
         creature.farFirstIndex = uint32_t(indices.size());
         creature.farTriangles = c.farMesh->triangleCount();
@@ -167,8 +174,8 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
                                                  gpu::MemoryUsage::GpuToCpu, "crowd.indirectReadback" + tag);
     }
 
-    // Each list draws its creature's mesh: the cage (near, middle) or the
-    // far mesh; firstInstance is the list's region, so the instance stream
+    // Each list draws its creature's mesh: the cage (near), its middle
+    // triangles (the cage's or fewer, over the same vertices) or the far mesh; firstInstance is the list's region, so the instance stream
     // (or gl_InstanceIndex) is the entry. Indices stay local to the mesh
     // (vertexOffset 0): every tier fetches its vertices by local index, the
     // near tier from its compressed cage, the others from the baked vertex
@@ -179,10 +186,9 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
         for (uint32_t c = 0; c < crowd->mCreatures.size(); ++c) {
             const Creature& k = crowd->mCreatures[c];
             uint32_t* cmd = &args[(tier * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS];
-            const bool far = tier == TS_LOD_FAR;
-            cmd[0] = 3 * (far ? k.farTriangles : k.cageTriangles);
+            cmd[0] = 3 * k.tierTriangles(tier);
             cmd[1] = 0;
-            cmd[2] = far ? k.farFirstIndex : k.cageFirstIndex;
+            cmd[2] = k.tierFirstIndex(tier);
             cmd[3] = 0;
             cmd[4] = shader::tsCrowdListBase(tier, c, uint32_t(crowd->mCreatures.size()), desc.maxInstances);
         }

@@ -108,6 +108,7 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
     if (given("--lod-fade")) o.lodFade = t.lodFade;
     if (given("--lod-edge")) o.lodEdge = t.lodEdge;
     if (given("--lod-far-triangles")) o.lodFarTriangles = t.lodFarTriangles;
+    if (given("--lod-middle-triangles")) o.lodMiddleTriangles = t.lodMiddleTriangles;
     if (given("--renderdoc")) o.renderdocFrame = t.renderdocFrame;
     if (given("--device-memory-cap")) o.deviceMemoryCap = t.deviceMemoryCap << 20;
     if (given("--hide-features")) {

@@ -90,14 +90,19 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
     count("--lod-near-max", t.lodNearMax, 0, 100000, "N",
           "at most N tessellated characters a frame (default: 256 on a GPU, 4 on lavapipe)");
     count("--lod-middle-max", t.lodMiddleMax, 0, 10000000, "N",
-          "at most N characters drawn as their untessellated cage a frame (the rest take the far mesh)");
+          "at most N characters drawn in the middle tier a frame, beyond which the smallest take the far "
+          "mesh, never one at or above the far threshold (default 16384 on a GPU, 64 on lavapipe)");
     count("--lod-fade", t.lodFade, 0, TS_LOD_MAX_FADE_FRAMES, "N",
-          "frames a tier change cross-fades over (dithered; default 8, 0: switch at once, at most 63)");
+          "frames a tier change cross-fades over (dithered; default 8 on a GPU, 4 on lavapipe, 0: switch at once, at most "
+          "63)");
     number("--lod-edge", t.lodEdge, 0.25, 64, "PX",
            "tessellate near characters to edges of about PX pixels (default 2 on a GPU, 3 on lavapipe)");
     count("--lod-far-triangles", t.lodFarTriangles, 4, 100000, "N",
-          "the far tier's mesh simplified to at most N triangles (default 120 on a GPU, 64 on lavapipe; the "
+          "the far tier's mesh simplified to at most N triangles (default 120 on a GPU, 200 on lavapipe; the "
           "content's far mesh has about 280)");
+    count("--lod-middle-triangles", t.lodMiddleTriangles, 0, 1000000, "N",
+          "the middle tier draws at most N of the cage's triangles, simplified over its vertices (default 0 on a "
+          "GPU: the whole cage; 1000 on lavapipe)");
     flag("--lod-colors", o.lodColors, "tint characters by LOD tier: near green, middle yellow, far red");
     text("--crowd-tiers", o.crowdTiers, "FILE",
          "write the last frame's crowd agents per LOD tier, as the backend binned them and as the CPU reference "

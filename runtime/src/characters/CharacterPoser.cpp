@@ -51,6 +51,7 @@ void CharacterPoser::finish(const CharacterAssets& assets) {
         lod::LodCharacter& c = mCharacters[a];
         c.levelPerPixel = lod::LodCharacter::levelPerPixelFor(asset.meanEdge, radius, mLevels.lod.targetEdgePixels);
         c.cageTriangles = asset.asset.cage.triangleCount();
+        c.middleTriangles = c.cageTriangles;
         c.farTriangles = c.cageTriangles; // the far mesh arrives with instanced crowd draws
     }
     for (size_t i = 0; i < mOffers.size(); ++i) {

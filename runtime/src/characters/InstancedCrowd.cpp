@@ -42,6 +42,17 @@ backend::CrowdDesc InstancedCrowd::desc(const CharacterAssets& assets, uint32_t 
         }
         mFarMeshes.push_back(&far);
     }
+    mMiddleIndices.assign(assets.size(), {});
+    for (size_t i = 0; i < assets.size(); ++i) {
+        // The middle tier may draw fewer of the cage's triangles over the
+        // same vertices (and baked animation): a CPU rasterizer pays per
+        // triangle, and at the middle tier's sizes the normal map carries
+        // the surface's detail. Seam-preserving where meshoptimizer can.
+        const character::CageMesh& cage = assets[i].asset.cage;
+        if (policy.middleMeshTriangles == 0 || cage.triangleCount() <= policy.middleMeshTriangles) continue;
+        auto coarser = character::simplifyCage(cage, {policy.middleMeshTriangles, 0.05f});
+        if (coarser) mMiddleIndices[i] = std::move(coarser.value().cageIndices);
+    }
     for (size_t i = 0; i < assets.size(); ++i) {
         const CrowdAsset& asset = assets[i];
         // The instance's sphere is the box's around its centre: levels per
@@ -50,9 +61,11 @@ backend::CrowdDesc InstancedCrowd::desc(const CharacterAssets& assets, uint32_t 
         lod::LodCharacter cost;
         cost.levelPerPixel = lod::LodCharacter::levelPerPixelFor(asset.meanEdge, radius, policy.targetEdgePixels);
         cost.cageTriangles = asset.asset.cage.triangleCount();
+        cost.middleTriangles = mMiddleIndices[i].empty() ? cost.cageTriangles : uint32_t(mMiddleIndices[i].size() / 3);
         cost.farTriangles = mFarMeshes[i]->triangleCount();
         mCosts.push_back(cost);
-        mCharacters.push_back({assets.handle(i), &asset.asset.cage, mFarMeshes[i], cost.levelPerPixel});
+        mCharacters.push_back(
+            {assets.handle(i), &asset.asset.cage, mFarMeshes[i], mMiddleIndices[i], cost.levelPerPixel});
     }
     const uint32_t nearSlots = policy.budget.maxNearInstances;
     backend::CrowdDesc desc;

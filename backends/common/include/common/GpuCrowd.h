@@ -37,7 +37,18 @@ public:
     struct Creature {
         GpuCharacter* character = nullptr;
         uint32_t cageFirstVertex = 0, cageFirstIndex = 0, cageTriangles = 0;
+        /// The middle tier's triangles over the cage's vertices (its own, or
+        /// CrowdCharacterDesc::middleIndices).
+        uint32_t middleFirstIndex = 0, middleTriangles = 0;
         uint32_t farFirstVertex = 0, farFirstIndex = 0, farTriangles = 0;
+        /// Triangles tier `tier` draws per instance (before tessellation).
+        uint32_t tierTriangles(uint32_t tier) const {
+            return tier == TS_LOD_FAR ? farTriangles : tier == TS_LOD_MIDDLE ? middleTriangles : cageTriangles;
+        }
+        /// First index of tier `tier`'s mesh in the crowd's index buffer.
+        uint32_t tierFirstIndex(uint32_t tier) const {
+            return tier == TS_LOD_FAR ? farFirstIndex : tier == TS_LOD_MIDDLE ? middleFirstIndex : cageFirstIndex;
+        }
     };
 
     /// `find` maps the desc's handles to the backend's characters;

@@ -27,6 +27,13 @@ Status checkCrowdDesc(const CrowdDesc& desc) {
         if (c.farMesh->bindings.size() != c.cage->bindings.size())
             return bad(name + ": its far mesh has " + std::to_string(c.farMesh->bindings.size()) +
                        " skinning matrices, its cage " + std::to_string(c.cage->bindings.size()));
+        if (c.middleIndices.size() % 3 != 0)
+            return bad(name + ": its middle tier's index count (" + std::to_string(c.middleIndices.size()) +
+                       ") is not a multiple of 3");
+        for (uint32_t index : c.middleIndices)
+            if (index >= c.cage->vertices.size())
+                return bad(name + ": its middle tier's index " + std::to_string(index) + " is past its cage's " +
+                           std::to_string(c.cage->vertices.size()) + " vertices");
         if (!(c.levelPerPixel > 0.0f) || !std::isfinite(c.levelPerPixel))
             return bad(name + ": levels per pixel must be a positive number");
     }

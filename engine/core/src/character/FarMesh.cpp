@@ -190,12 +190,14 @@ Result<FarMesh> simplifyCage(const CageMesh& cage, const FarMeshSettings& settin
     FarMesh result;
     if (cage.triangleCount() <= settings.targetTriangles) {
         result.mesh = compact(cage, cage.indices);
+        result.cageIndices = cage.indices;
         return result;
     }
     const size_t targetIndices = size_t{settings.targetTriangles} * 3;
     const float scale = meshopt_simplifyScale(&cage.vertices[0].position.x, cage.vertices.size(), sizeof(CageVertex));
     auto finish = [&](FarMeshMethod method, const std::vector<uint32_t>& indices, float error) {
         result.mesh = compact(cage, indices);
+        result.cageIndices = indices;
         result.method = method;
         result.relativeError = error;
         result.absoluteError = error * scale;

@@ -90,4 +90,18 @@ Admission admit(std::vector<AdmissionItem>& items, uint64_t forcedCost, uint64_t
     return best;
 }
 
+void admitDownTo(std::vector<AdmissionItem>& items, float floor, Admission& admission) {
+    // The admitted prefix is the largest items; the ones it leaves at or
+    // above the floor follow it in any order (nth_element's), so a
+    // partition of the rest keeps the prefix and gathers them after it.
+    auto rest = items.begin() + std::ptrdiff_t(admission.admitted);
+    auto end = std::stable_partition(rest, items.end(), [floor](const AdmissionItem& item) { return item.pixels >= floor; });
+    for (auto it = rest; it != end; ++it) {
+        admission.cost += it->cost;
+        ++admission.count;
+    }
+    admission.admitted = uint32_t(end - items.begin());
+    admission.cut = floor;
+}
+
 } // namespace tessera::lod::detail

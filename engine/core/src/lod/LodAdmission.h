@@ -39,4 +39,9 @@ struct Admission {
 Admission admit(std::vector<AdmissionItem>& items, uint64_t forcedCost, uint64_t forcedCount,
                 const AdmissionLimits& limits, bool demotionsFade);
 
+/// Widens `admission` to every item of at least `floor` pixels (a floor
+/// below its cut): those items first in `items`, the cut at `floor`, the
+/// count and cost raised by the items it adds (each costing its `cost`).
+void admitDownTo(std::vector<AdmissionItem>& items, float floor, Admission& admission);
+
 } // namespace tessera::lod::detail

@@ -159,7 +159,12 @@ void LodManager::fitBudget(std::span<const LodInstance> instances, std::span<con
             if (near.admitted == 0) near = admitTier(TS_LOD_NEAR, cap, nearLimits, fades);
         }
         take(TS_LOD_NEAR, near);
-        const detail::Admission middle = admitTier(TS_LOD_MIDDLE, cap, middleLimits, fades);
+        detail::Admission middle = admitTier(TS_LOD_MIDDLE, cap, middleLimits, fades);
+        // The far mesh is made for creatures below the far threshold: the
+        // middle budget never hands it a larger one (only those the
+        // hysteresis keeps in the middle tier below it), so the middle tier
+        // may hold more than its budget (docs/CROWD.md 6.2, "Fallbacks").
+        if (middle.cut > mPolicy.farPixels) detail::admitDownTo(items, mPolicy.farPixels, middle);
         take(TS_LOD_MIDDLE, middle);
         const detail::Admission far = admitTier(TS_LOD_FAR, cap, farLimits, fades);
         take(TS_LOD_FAR, far);
@@ -207,7 +212,7 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
                 ++c.instances;
                 if (share < 1.0f) ++c.fading;
                 c.triangles += near  ? nearTriangles(seen.pixels, character, p.levels.x)
-                               : t == TS_LOD_MIDDLE ? character.cageTriangles
+                               : t == TS_LOD_MIDDLE ? character.middleTriangles
                                                     : character.farTriangles;
             };
             draw(tier, coverage, false);

@@ -27,9 +27,21 @@ LodPolicy LodPolicy::forDevice(DeviceClass device) {
         policy.targetEdgePixels = 3.0f;
         policy.budget.maxNearInstances = 4;
         policy.budget.maxTessellatedTriangles = 100'000;
-        policy.budget.maxMiddleInstances = 12;
+        policy.budget.maxMiddleInstances = 64;
         policy.budget.maxFarInstances = 3000;
-        policy.farMeshTriangles = 64;
+        // A far mesh of 200 triangles: at the far threshold (64 px) its
+        // silhouette overlaps the cage's by 86%, where 64 triangles (the
+        // earlier default) made crumpled cones at 63% (CrowdFallbacks).
+        policy.farMeshTriangles = 200;
+        // lavapipe draws 8 to 15 frames a second: 4 frames of cross-fade
+        // keep a change under half a second, so fewer creatures show the
+        // dither at once (8 frames is a tenth of a second on a GPU).
+        policy.fadeFrames = 4;
+        // The middle tier's creatures are 64 to 192 pixels tall: a fifth of
+        // the cage's triangles, over its vertices and with its normal map,
+        // reads the same there (docs/CROWD.md 6.2, "Fallbacks"), and a cage
+        // costs lavapipe about 1.2 ms of CPU time a frame.
+        policy.middleMeshTriangles = 1000;
     }
     return policy;
 }

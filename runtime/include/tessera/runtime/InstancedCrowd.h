@@ -65,6 +65,9 @@ private:
     std::vector<backend::CrowdCharacterDesc> mCharacters;
     std::vector<const character::CageMesh*> mFarMeshes;
     std::vector<character::CageMesh> mSimplifiedFar; ///< reserved: mFarMeshes point into it
+    /// Per creature: the middle tier's coarser triangles over its cage's
+    /// vertices (LodPolicy::middleMeshTriangles; empty: the whole cage).
+    std::vector<std::vector<uint32_t>> mMiddleIndices;
     lod::LodManager mLod;
     std::vector<shader::CrowdInstance> mInstances;
     std::vector<lod::LodInstance> mLodInstances;

@@ -178,6 +178,7 @@ struct Options {
     std::optional<float> lodEdge;              ///< --lod-edge PX: the near tier's tessellated edge in pixels
     std::optional<uint32_t> lodFade;           ///< --lod-fade N: cross-fade frames (0: instant)
     std::optional<uint32_t> lodFarTriangles;   ///< --lod-far-triangles N: the far mesh's triangles at most
+    std::optional<uint32_t> lodMiddleTriangles; ///< --lod-middle-triangles N: the middle mesh's (0: the cage)
     bool lodColors = false;             ///< --lod-colors: tint instances by LOD tier
 
     /// --agents N (the crowd scene's agents; unset: 2000) or, with --bench

@@ -35,6 +35,10 @@ struct CrowdCharacterDesc {
     /// vertex animation. Must outlive createCrowd only.
     const character::CageMesh* cage = nullptr;
     const character::CageMesh* farMesh = nullptr;
+    /// The middle tier's triangles as indices into the cage's vertices (a
+    /// simplified cage, lod::LodPolicy::middleMeshTriangles); empty: the
+    /// cage's own. Must outlive createCrowd only.
+    std::span<const uint32_t> middleIndices;
     /// Near-tier levels per projected pixel (lod::LodCharacter::levelPerPixel).
     float levelPerPixel = 0.01f;
 };

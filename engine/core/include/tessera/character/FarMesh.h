@@ -48,6 +48,10 @@ struct FarMesh {
     /// (position, normal, tangent, uv, joints, weights), and the cage's
     /// `bindings` unchanged.
     CageMesh mesh;
+    /// The same triangles as indices into the cage's own vertices (before
+    /// `mesh` compacted them): a coarser index list over the cage, which the
+    /// crowd's middle tier draws over the cage's baked vertices.
+    std::vector<uint32_t> cageIndices;
     FarMeshMethod method = FarMeshMethod::Copy;
     /// meshoptimizer's error of the method used, relative to the cage's
     /// extent (0 for Copy; summed over the stages when the welded pass

@@ -28,8 +28,9 @@ struct LodCharacter {
     /// diameter: (mean cage edge / sphere diameter) / targetEdgePixels, so
     /// an edge covers about targetEdgePixels on screen (levelPerPixelFor()).
     float levelPerPixel = 0.01f;
-    uint32_t cageTriangles = 0; ///< the middle tier's, and the near tier's before tessellation
-    uint32_t farTriangles = 0;  ///< the far mesh's
+    uint32_t cageTriangles = 0;   ///< the near tier's before tessellation
+    uint32_t middleTriangles = 0; ///< the middle tier's mesh (the cage, or its simplified triangles)
+    uint32_t farTriangles = 0;    ///< the far mesh's
 
     /// levelPerPixel for a cage whose mean edge is `meanEdge` in a sphere of
     /// radius `radius` (both in the same units).

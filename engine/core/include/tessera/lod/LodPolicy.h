@@ -55,6 +55,10 @@ struct LodPolicy {
     /// The far tier's mesh: at most this many triangles (the content's far
     /// mesh simplified further when it has more); 0 keeps the content's.
     uint32_t farMeshTriangles = 120;
+    /// The middle tier's mesh: the cage's own vertices with its triangles
+    /// simplified to at most this many (the normal map keeps the surface);
+    /// 0 draws the whole cage.
+    uint32_t middleMeshTriangles = 0;
     LodBudget budget;
 
     /// The defaults for `device`: on a CPU rasterizer a handful of
