@@ -46,9 +46,14 @@ constexpr float kSidestepPeriod = 2.0f;
 // Walkers wanting to come the other way around a point kLaneLookAhead
 // metres ahead turn an agent's preferred direction to the right by
 // kLaneShift radians per agent per square metre, up to kMaxLaneShift:
-// opposing streams settle into lanes instead of meeting head on.
+// opposing streams settle into lanes instead of meeting head on. Gently
+// (0.3, not 0.9): a crowd waiting at a passage that turned aside hard for
+// the stream coming out stood off the passage, left its own lane a single
+// file and the other group the whole width (measured: 0.9 put 36% and 38%
+// of the counterflow through within twice their free walk, 0.3 37% and 40%,
+// 0: 34% and 28%).
 constexpr float kLaneLookAhead = 1.0f;
-constexpr float kLaneShift = 0.9f;
+constexpr float kLaneShift = 0.3f;
 constexpr float kMaxLaneShift = 1.3f;
 // Oncoming agents per square metre that give a stuck agent a side to take.
 constexpr float kOncomingSide = 0.05f;
