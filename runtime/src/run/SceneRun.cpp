@@ -163,7 +163,19 @@ void SceneRun::renderFrame(uint32_t frame, bool readback) {
     {
         // The characters stand on the ground the backend draws this frame.
         TESSERA_CPU_SCOPE("terrain.ground");
-        session.updateGround(mWorld->ground(), mCamera, mSettings);
+        terrain::DrawnSurface& ground = mWorld->ground();
+        session.updateGround(ground, mCamera, mSettings);
+        // The camera keeps its height over the ground as drawn too: a path
+        // laid over the height field would sink with it where coarse levels
+        // draw the ground metres above (docs/CROWD.md 6.8), closer to the
+        // ground and the creatures on it than on a backend drawing finer.
+        // The lifted view draws other levels, so the ground is drawn again.
+        const glm::vec3 eye = mCamera.position();
+        const float rise = ground.heightAt(eye.x, eye.z) - mWorld->terrain().heightAt(eye.x, eye.z);
+        if (rise > 0.0f) {
+            mCamera.setPosition(eye + glm::vec3(0.0f, rise, 0.0f));
+            session.updateGround(ground, mCamera, mSettings);
+        }
     }
     backend::CharacterDrawInfo draw;
     backend::CrowdDrawInfo crowdDraw;
