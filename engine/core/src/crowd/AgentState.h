@@ -23,7 +23,9 @@ struct AgentState {
     /// Avoidance's choice, applied by integrate(); then separation's second
     /// buffer of positions.
     std::vector<glm::vec2> nextVelocity;
-    std::vector<glm::vec2> moved;         ///< XZ after motion and separation
+    /// XZ after motion and separation; during steer(), each agent's yield
+    /// weight (in x).
+    std::vector<glm::vec2> moved;
     std::vector<glm::vec2> anchor;        ///< where it stood when it last made progress
     std::vector<float> stuckTime;         ///< seconds since it last got closer
     std::vector<float> fleeTime;          ///< seconds of fleeing left

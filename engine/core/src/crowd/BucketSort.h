@@ -13,7 +13,8 @@ namespace tessera::crowd {
 /// holds order[start[b]] .. order[start[b + 1] - 1]. Counting and scattering
 /// run on `threads` threads with atomic counters, and each bucket is then
 /// sorted by item index, so the result is the same whatever the thread
-/// count or interleaving; only the prefix sum over buckets is serial.
+/// count or interleaving. Every pass over the items or the buckets is
+/// parallel (the prefix sum by blocks).
 void bucketSort(std::span<const uint32_t> bucketOf, uint32_t buckets, std::vector<uint32_t>& start,
                 std::vector<uint32_t>& order, uint32_t threads);
 

@@ -7,6 +7,7 @@
 #include "Avoidance.h"
 #include "Navigation.h"
 #include "SpatialHash.h"
+#include "tessera/crowd/FloorToInt.h"
 #include "tessera/core/ParallelFor.h"
 #include "tessera/core/Random.h"
 #include "tessera/profiler/CpuScope.h"
@@ -32,6 +33,8 @@ constexpr float kWallHorizon = 1.0f;
 constexpr uint32_t kMaxWalls = 8;
 // Steps between re-sorting the agents in memory by where they stand.
 constexpr uint64_t kReorderSteps = 32;
+// Agents per range of the statistics' parallel count.
+constexpr uint32_t kStatsGrain = 16384;
 // Separation stops once no agent needed a push longer than this (metres).
 constexpr float kSettled = 1e-3f;
 // An arrival at a Stay goal picks its spot up to this far on (metres)...
@@ -73,7 +76,7 @@ glm::vec2 rotate(glm::vec2 v, float angle) {
 
 float wrapAngle(float a) {
     constexpr float pi = std::numbers::pi_v<float>;
-    return a - 2.0f * pi * std::floor((a + pi) / (2.0f * pi));
+    return a - 2.0f * pi * float(floorToInt((a + pi) / (2.0f * pi)));
 }
 
 glm::vec2 xz(const glm::vec3& p) { return {p.x, p.z}; }
@@ -183,6 +186,13 @@ void Crowd::steer() {
     const float maxDelta = s.maxAcceleration * s.timeStep;
     AgentState& st = *mState;
     CrowdAgents& a = mAgents;
+    // How much each agent gives way, once per agent rather than once per
+    // agent that has it for a neighbour (a square root and a division, ten
+    // times over). Kept in the x of integrate()'s buffer, free until then.
+    std::vector<glm::vec2>& yield = st.moved;
+    core::parallelForRanges(count, kGrain, s.threads, [&](core::IndexRange range) {
+        for (uint32_t i = range.begin; i < range.end; ++i) yield[i].x = yieldWeight(a.velocity[i], a.preferredSpeed[i]);
+    });
     core::parallelForRanges(count, kGrain, s.threads, [&](core::IndexRange range) {
         Neighbour near[16];
         float nearDistance[16];
@@ -327,12 +337,8 @@ void Crowd::steer() {
             // Who gives way: an agent held up (slower than it wants) more than
             // one walking freely, so a stream comes through a waiting crowd
             // rather than the crowd pressing into the stream.
-            const float weight = yieldWeight(a.velocity[i], a.preferredSpeed[i]);
-            for (uint32_t k = 0; k < found; ++k) {
-                const uint32_t j = near[k].agent;
-                const float other = yieldWeight(a.velocity[j], a.preferredSpeed[j]);
-                near[k].share = weight / (weight + other);
-            }
+            const float weight = yield[i].x;
+            for (uint32_t k = 0; k < found; ++k) near[k].share = weight / (weight + yield[near[k].agent].x);
             AvoidanceQuery query{a.velocity[i], preferred, maxSpeed, a.radius[i], s.comfortMargin,
                                  s.horizonSeconds, kWallHorizon, s.timeStep};
             const glm::vec2 chosen = avoidCollisions(query, std::span<const Neighbour>(near, found),
@@ -512,18 +518,36 @@ void Crowd::finishStep() {
 
 void Crowd::publish() {
     const AgentState& st = *mState;
+    // Counted per range in parallel (a serial pass over a million agents
+    // is a few milliseconds that no number of cores shortens), then summed:
+    // counts and a maximum, the same whatever the thread count.
+    const uint32_t count = uint32_t(mAgents.size());
+    std::vector<CrowdStats> partial((count + kStatsGrain - 1) / kStatsGrain);
+    core::parallelForRanges(count, kStatsGrain, mSettings.threads, [&](core::IndexRange range) {
+        CrowdStats& part = partial[range.begin / kStatsGrain];
+        for (uint32_t i = range.begin; i < range.end; ++i) {
+            const uint8_t flags = st.flags[i];
+            part.walking += mAgents.clip[i] == AgentClip::Walk;
+            part.fleeing += st.fleeTime[i] > 0.0f;
+            part.escaping += (flags & kEscaping) != 0;
+            part.unreachable += (flags & kUnreachable) != 0;
+            part.staying += (flags & kStaying) != 0;
+            part.stuck += st.stuckTime[i] > mSettings.stuckSeconds;
+            part.maxStuckSeconds = std::max(part.maxStuckSeconds, st.stuckTime[i]);
+            part.arrivals += (flags & kArrived) != 0;
+        }
+    });
     CrowdStats stats;
-    stats.agents = uint32_t(mAgents.size());
-    for (uint32_t i = 0; i < stats.agents; ++i) {
-        const uint8_t flags = st.flags[i];
-        stats.walking += mAgents.clip[i] == AgentClip::Walk;
-        stats.fleeing += st.fleeTime[i] > 0.0f;
-        stats.escaping += (flags & kEscaping) != 0;
-        stats.unreachable += (flags & kUnreachable) != 0;
-        stats.staying += (flags & kStaying) != 0;
-        stats.stuck += st.stuckTime[i] > mSettings.stuckSeconds;
-        stats.maxStuckSeconds = std::max(stats.maxStuckSeconds, st.stuckTime[i]);
-        mArrivals += (flags & kArrived) != 0;
+    stats.agents = count;
+    for (const CrowdStats& part : partial) {
+        stats.walking += part.walking;
+        stats.fleeing += part.fleeing;
+        stats.escaping += part.escaping;
+        stats.unreachable += part.unreachable;
+        stats.staying += part.staying;
+        stats.stuck += part.stuck;
+        stats.maxStuckSeconds = std::max(stats.maxStuckSeconds, part.maxStuckSeconds);
+        mArrivals += part.arrivals;
     }
     stats.arrivals = mArrivals;
     stats.activeHazards = mNavigation->cost().hazardCount();
@@ -534,7 +558,9 @@ void Crowd::publish() {
     // Now and then, agents are re-sorted in memory by the tile they stand on.
     if (mSteps % kReorderSteps == 0 && !mAgents.id.empty()) {
         reorderAgents(mAgents, *mState, mBins->order(), mSettings.threads);
-        for (uint32_t i = 0; i < uint32_t(mAgents.size()); ++i) mIndexOf[mAgents.id[i]] = i;
+        core::parallelForRanges(count, kStatsGrain, mSettings.threads, [&](core::IndexRange range) {
+            for (uint32_t i = range.begin; i < range.end; ++i) mIndexOf[mAgents.id[i]] = i;
+        });
         mBins->build(mAgents.position, mAgents.radius, mSettings.agentHeight, mSettings.threads);
     }
     if (mGraph && mGraph->isAlive(mNode)) mGraph->setLocalBounds(mNode, bounds());

@@ -1,5 +1,7 @@
 #include "tessera/crowd/PotentialField.h"
 
+#include "tessera/crowd/FloorToInt.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -16,7 +18,7 @@ float PotentialField::cellValue(int32_t i, int32_t j) const {
 float PotentialField::sample(glm::vec2 p) const {
     const float h = mGrid->cellSize();
     const glm::vec2 f = p / h - 0.5f;
-    const int32_t i = int32_t(std::floor(f.x)), j = int32_t(std::floor(f.y));
+    const int32_t i = floorToInt(f.x), j = floorToInt(f.y);
     const float tx = f.x - float(i), tz = f.y - float(j);
     const float v[4] = {cellValue(i, j), cellValue(i + 1, j), cellValue(i, j + 1), cellValue(i + 1, j + 1)};
     const float w[4] = {(1 - tx) * (1 - tz), tx * (1 - tz), (1 - tx) * tz, tx * tz};
@@ -34,7 +36,7 @@ bool PotentialField::reachable(glm::vec2 p) const {
 glm::vec2 PotentialField::descent(glm::vec2 p) const {
     const float h = mGrid->cellSize();
     const glm::vec2 f = p / h - 0.5f;
-    const int32_t i = int32_t(std::floor(f.x)), j = int32_t(std::floor(f.y));
+    const int32_t i = floorToInt(f.x), j = floorToInt(f.y);
     const float tx = f.x - float(i), tz = f.y - float(j);
     float v00 = cellValue(i, j), v10 = cellValue(i + 1, j), v01 = cellValue(i, j + 1), v11 = cellValue(i + 1, j + 1);
     float highest = -1.0f;

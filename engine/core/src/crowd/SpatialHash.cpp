@@ -17,8 +17,7 @@ void SpatialHash::build(std::span<const glm::vec3> positions, float cellSize, ui
     const uint32_t buckets = std::bit_ceil(std::max(n, 1024u));
     mMask = buckets - 1;
     auto cellOf = [&](uint32_t a) {
-        return glm::ivec2(int32_t(std::floor(positions[a].x * mInverseCell)),
-                          int32_t(std::floor(positions[a].z * mInverseCell)));
+        return glm::ivec2(floorToInt(positions[a].x * mInverseCell), floorToInt(positions[a].z * mInverseCell));
     };
     // mKey holds each agent's bucket until the slots take their keys.
     std::vector<uint32_t>& bucketOfAgent = mKey;

@@ -1,6 +1,8 @@
 #pragma once
 // Internal: the uniform spatial hash that finds an agent's neighbours.
 
+#include "tessera/crowd/FloorToInt.h"
+
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -30,10 +32,10 @@ public:
     /// them from a few contiguous runs instead of all over the agents' arrays.
     template <class F>
     void forEachNear(glm::vec2 p, float radius, F&& f) const {
-        const int32_t x0 = int32_t(std::floor((p.x - radius) * mInverseCell));
-        const int32_t x1 = int32_t(std::floor((p.x + radius) * mInverseCell));
-        const int32_t z0 = int32_t(std::floor((p.y - radius) * mInverseCell));
-        const int32_t z1 = int32_t(std::floor((p.y + radius) * mInverseCell));
+        const int32_t x0 = floorToInt((p.x - radius) * mInverseCell);
+        const int32_t x1 = floorToInt((p.x + radius) * mInverseCell);
+        const int32_t z0 = floorToInt((p.y - radius) * mInverseCell);
+        const int32_t z1 = floorToInt((p.y + radius) * mInverseCell);
         const uint32_t span = uint32_t(x1 - x0);
         for (int32_t z = z0; z <= z1; ++z) {
             // A row of cells is a run of consecutive buckets, so its agents

@@ -4,6 +4,7 @@
 /// the cost of walking on the ground itself (slope), impassable where it is
 /// too steep.
 
+#include "tessera/crowd/FloorToInt.h"
 #include "tessera/terrain/Terrain.h"
 
 #include <cmath>
@@ -53,7 +54,7 @@ public:
     /// (Inline, by the inverse of the cell size: every agent looks up cells
     /// many times a step.)
     glm::ivec2 cellOf(glm::vec2 p) const {
-        return {int32_t(std::floor(p.x * mInverseCellSize)), int32_t(std::floor(p.y * mInverseCellSize))};
+        return {floorToInt(p.x * mInverseCellSize), floorToInt(p.y * mInverseCellSize)};
     }
     bool inGrid(int32_t i, int32_t j) const { return i >= 0 && j >= 0 && uint32_t(i) < mWidth && uint32_t(j) < mHeight; }
     uint32_t index(uint32_t i, uint32_t j) const { return j * mWidth + i; }
