@@ -103,13 +103,13 @@ protected:
     }
     void recordCrowdPasses(GpuCrowd& crowd, const CrowdFrame& frame) override {
         CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
-                                     frame.uniforms);
+                                     frame.uniforms, mShadowMaps.writes());
         mCrowdPass.recordCompute(*mFrame, crowd, crowd.extensionAs<MeshshaderCrowdResources>(), descriptors,
                                  frame.instanceCount);
     }
     void recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame& frame) override {
         CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
-                                     frame.uniforms);
+                                     frame.uniforms, mShadowMaps.writes());
         mCrowdPass.recordDraws(*mFrame, crowd, crowd.extensionAs<MeshshaderCrowdResources>(), descriptors);
     }
     // crowd.cull, crowd.skin and a draw pass per tier.
@@ -121,7 +121,7 @@ protected:
         const gpu::UniformSlice tessUniforms = pushTessUniforms(terrain, settings, 64.0f);
         // The technique's intermediates: the pre-pass's level buffers, one
         // pair per frame in flight, and the pattern tables.
-        mReport.intermediateBytes = mTerrainPass.tableBytes();
+        mReport.intermediateBytes += mTerrainPass.tableBytes();
         for (uint32_t slot = 0; slot < gpu::kFramesInFlight; ++slot)
             mReport.intermediateBytes += terrain.edgeLevels(slot).size() + terrain.patchLevels(slot).size();
         // Continuous mode has one level for the draw: no per-edge pre-pass.

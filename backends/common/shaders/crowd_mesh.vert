@@ -11,6 +11,7 @@
 #extension GL_GOOGLE_include_directive : require
 #define TS_CROWD 1
 #include "common_frame.glsl"
+#include "shadow_caster.glsl"
 #include "crowd_baked_mesh.glsl"
 
 layout(location = 0) in uvec4 inEntry; // CrowdListEntry, per instance
@@ -33,5 +34,5 @@ void main() {
     outUv = p.uv;
     outCrowdLod = tsCrowdFragmentLod();
     outCrowdShade = tsCrowdFragmentShade();
-    gl_Position = frame.viewProjection * p.world;
+    gl_Position = tsClipPosition(p.world);
 }

@@ -13,6 +13,7 @@
 #define TS_CROWD 1
 #define TS_CROWD_TEXELS 1
 #include "common_frame.glsl"
+#include "shadow_caster.glsl"
 #include "character_eval.glsl"
 
 layout(location = 0) in uint inCode; // the pattern point's code
@@ -57,5 +58,5 @@ void main() {
     outUv = p.uv;
     outCrowdLod = tsCrowdFragmentLod();
     outCrowdShade = tsCrowdFragmentShade();
-    gl_Position = frame.viewProjection * vec4(p.world, 1.0);
+    gl_Position = tsClipPosition(vec4(p.world, 1.0));
 }

@@ -4,6 +4,7 @@
 #include "common/CrowdTierCounts.h"
 #include "tessera/shaders/CrowdLod.h"
 #include "tessera/shaders/FrameUniforms.h"
+#include "tessera/shaders/ShadowCascades.h"
 #include "tessera/character/CharacterAsset.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/tessellator/Tessellator.h"
@@ -25,9 +26,13 @@ gpu::PipelineLayout characterLayout(gpu::Device& device, CharacterBindings bindi
         layout.push_back({TS_BINDING_CAGE_VERTICES, cageType, stages});
         layout.push_back({TS_BINDING_COMPRESSED, cageType, stages});
     }
-    if (bindings == CharacterBindings::Draw)
+    if (bindings == CharacterBindings::Draw) {
         for (uint32_t binding : {TS_BINDING_BASE_COLOR, TS_BINDING_NORMAL_MAP, TS_BINDING_DISPLACEMENT})
             layout.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages});
+        // The cascaded shadow maps the characters receive (CascadedShadowMaps).
+        layout.push_back({TS_BINDING_SHADOW_CASCADES, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages});
+        layout.push_back({TS_BINDING_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages});
+    }
     layout.insert(layout.end(), extra.begin(), extra.end());
     return gpu::PipelineLayout(device, layout, pushConstantBytes, pushConstantStages, std::move(name));
 }
@@ -93,6 +98,15 @@ void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& dra
         for (const CharacterInstance& instance : instances) skinCharacter(instance);
         ++mReport.passes;
     }
+    // The casters' depths before any receiver reads them (the characters
+    // below, the crowds and the terrain after).
+    if (mCascadedShadows) {
+        suspendMainPass();
+        mShadowMaps.record(*mFrame, "shadows.characters", [&](uint32_t, const glm::mat4& viewProjection) {
+            for (const CharacterInstance& instance : instances) drawCharacterShadow(instance, draw.path, viewProjection);
+        });
+        ++mReport.passes;
+    }
     ensureMainPass();
     gpu::PassScope pass(*mFrame, draw.path == backend::CharacterPath::TwoPass ? "character.tessellate"
                                                                                : "character.singlePass");
@@ -145,6 +159,12 @@ void BasicCharacterBackend::drawCrowd(backend::CrowdHandle handle, const backend
     suspendMainPass();
     recordCrowdPasses(*crowd, frame);
     recordCrowdCountsCopy(mFrame->cmd(), *crowd, frame.slot);
+    if (mCascadedShadows) {
+        mShadowMaps.record(*mFrame, "shadows.crowd", [&](uint32_t, const glm::mat4& viewProjection) {
+            recordCrowdShadow(*crowd, frame, viewProjection);
+        });
+        ++mReport.passes;
+    }
     ensureMainPass();
     recordCrowdDraws(*crowd, frame);
     const uint64_t bytes = crowd->bytes() + crowd->extensionBytes();
@@ -181,10 +201,12 @@ void BasicCharacterBackend::pushCharacterDescriptors(VkPipelineBindPoint bindPoi
         {c.sampler().handle(), c.displacementMap().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
     const uint32_t imageBindings[3] = {TS_BINDING_BASE_COLOR, TS_BINDING_NORMAL_MAP, TS_BINDING_DISPLACEMENT};
     std::vector<VkWriteDescriptorSet> writes;
-    writes.reserve(6 + extra.size());
+    writes.reserve(8 + extra.size());
     for (int i = 0; i < 3; ++i) writes.push_back(bufferWrite(bufferBindings[i], VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &buffers[i]));
-    if (bindings == CharacterBindings::Draw)
+    if (bindings == CharacterBindings::Draw) {
         for (int i = 0; i < 3; ++i) writes.push_back(imageWrite(imageBindings[i], &images[i]));
+        writes.insert(writes.end(), mShadowMaps.writes().begin(), mShadowMaps.writes().end());
+    }
     writes.insert(writes.end(), extra.begin(), extra.end());
     mDevice->fn().cmdPushDescriptorSet(mFrame->cmd(), bindPoint, layout.handle(), 0,
                                        static_cast<uint32_t>(writes.size()), writes.data());

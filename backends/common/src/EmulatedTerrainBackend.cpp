@@ -114,7 +114,8 @@ void EmulatedTerrainBackend::beginTechniqueFrame() {
 }
 
 void EmulatedTerrainBackend::recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame& frame) {
-    CrowdDescriptors descriptors(CrowdDescriptors::Mode::Texels, crowd, frame.slot, mFrameUniforms, frame.uniforms);
+    CrowdDescriptors descriptors(CrowdDescriptors::Mode::Texels, crowd, frame.slot, mFrameUniforms, frame.uniforms,
+                                 mShadowMaps.writes());
     mCrowdNear.record(*mFrame, crowd, descriptors);
     mCrowdMesh.record(*mFrame, crowd, descriptors);
 }
@@ -136,7 +137,7 @@ void EmulatedTerrainBackend::drawTessellated(GpuTerrain& terrain, const backend:
     const gpu::UniformSlice tessUniforms = pushTessUniforms(terrain, draw.tessellation, TS_EMU_MAX_LEVEL);
     EmulatedDrawSource source;
     if (!draw.visiblePatches.empty()) source = recordFactorPasses(terrain, draw, tessUniforms);
-    mReport.intermediateBytes = patternBytes() + factorPassBytes();
+    mReport.intermediateBytes += patternBytes() + factorPassBytes();
 
     ensureMainPass();
     gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");

@@ -96,6 +96,12 @@ protected:
     virtual void skinCharacter(const CharacterInstance& instance) = 0;
     /// Pass 2, inside the main pass.
     virtual void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) = 0;
+    /// Cascaded shadows (a backend that sets BackendCapabilities::
+    /// cascadedShadows): pass 2 again as a caster, depth only, into the open
+    /// layer of the cascade whose matrix is `viewProjection`
+    /// (ShadowCasterPipeline), after pass 1 and outside the main pass.
+    virtual void drawCharacterShadow(const CharacterInstance& /*instance*/, backend::CharacterPath /*path*/,
+                                     const glm::mat4& /*viewProjection*/) {}
     /// Bytes of the technique's own character intermediates (render targets,
     /// pattern streams) beyond the compressed cages, for FrameReport.
     virtual uint64_t characterPassBytes() const { return 0; }
@@ -120,6 +126,11 @@ protected:
     virtual void recordCrowdPasses(GpuCrowd& /*crowd*/, const CrowdFrame& /*frame*/) {}
     /// Inside the main pass: each tier's draws.
     virtual void recordCrowdDraws(GpuCrowd& /*crowd*/, const CrowdFrame& /*frame*/) {}
+    /// Cascaded shadows: each tier's draws again as casters, depth only, over
+    /// the lists recordCrowdPasses made, into the open layer of the cascade
+    /// whose matrix is `viewProjection`; outside the main pass.
+    virtual void recordCrowdShadow(GpuCrowd& /*crowd*/, const CrowdFrame& /*frame*/,
+                                   const glm::mat4& /*viewProjection*/) {}
     /// GPU passes one drawCrowd records (passes and draws), for FrameReport::passes.
     virtual uint32_t crowdPassCount() const { return 0; }
 

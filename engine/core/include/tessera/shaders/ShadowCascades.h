@@ -9,6 +9,11 @@
 // The most cascades (scene::ShadowCascadeFit::kMaxCascades).
 #define TS_SHADOW_MAX_CASCADES 4u
 
+// The receivers' bindings (set 0) in every terrain, character and crowd
+// layout: the ShadowCascadeUniforms block and the sampler2DArrayShadow.
+#define TS_BINDING_SHADOW_CASCADES 48
+#define TS_BINDING_SHADOW_MAP 49
+
 TS_NAMESPACE_BEGIN
 
 struct ShadowCascadeUniforms {

@@ -1,0 +1,44 @@
+#pragma once
+/// @file ShadowCasterPipeline.h
+/// The depth-only variant of a caster pipeline (docs/LOOKS.md, "Cascaded
+/// shadow maps"): the same draw over the same lists as the main pass, with
+/// the stage that writes gl_Position replaced by its TS_SHADOW_CASTER
+/// variant (shadow_caster.glsl: the cascade's matrix as a push constant)
+/// and no fragment stage, rendering into a CascadedShadowMaps layer.
+
+#include "tessera/gpu/Pipeline.h"
+#include "tessera/gpu/PipelineLayout.h"
+
+#include <glm/glm.hpp>
+#include <span>
+
+namespace tessera::backends {
+
+class ShadowCasterPipeline {
+public:
+    /// Push-constant bytes a caster layout declares: the cascade's matrix.
+    static constexpr uint32_t kPushBytes = sizeof(glm::mat4);
+
+    ShadowCasterPipeline() = default;
+    /// From the main pass's `desc`: `stage`'s SPIR-V replaced by `caster`,
+    /// the fragment stage dropped, no colour targets, the shadow map's depth
+    /// format, no face culling (the sun's projection has no Y flip, and
+    /// either side of a closed mesh casts), the casters' depth bias, through
+    /// `layout` (the main layout's bindings plus kPushBytes of push
+    /// constants for `pushStages`), named `desc.name` + ".shadow".
+    ShadowCasterPipeline(gpu::Device& device, gpu::GraphicsPipelineDesc desc, gpu::PipelineLayout layout,
+                         VkShaderStageFlags pushStages, VkShaderStageFlagBits stage, std::span<const uint32_t> caster);
+
+    bool valid() const { return mPipeline.valid(); }
+    /// The layout the draws push their descriptors through.
+    const gpu::PipelineLayout& layout() const { return mLayout; }
+    /// Binds the pipeline and pushes the cascade's `viewProjection`.
+    void bind(VkCommandBuffer cmd, const glm::mat4& viewProjection) const;
+
+private:
+    gpu::PipelineLayout mLayout;
+    gpu::Pipeline mPipeline;
+    VkShaderStageFlags mPushStages = 0;
+};
+
+} // namespace tessera::backends
