@@ -11,6 +11,7 @@
 
 #include "character.frag_crowd_texels.spv.h"
 #include "crowd_mesh.vert_texels.spv.h"
+#include "crowd_mesh.vert_texels_shadow.spv.h"
 #include "terrain_basic.frag.spv.h"
 #include "terrain_emulated.vert.spv.h"
 
@@ -58,7 +59,8 @@ Status EmulatedTerrainBackend::initializeTechnique(const backend::BackendInitInf
         mSubdivPass = EmulatedSubdivPass(*mDevice, name, color, depth, mWireframeSupported);
     if (capabilities(nullptr).crowd) {
         mCrowdMesh = CrowdMeshPass(*mDevice, CrowdDescriptors::Mode::Texels, crowd_mesh_vert_texels_spv,
-                                   character_frag_crowd_texels_spv, color, depth, name + ".crowd.mesh");
+                                   character_frag_crowd_texels_spv, color, depth, name + ".crowd.mesh",
+                                   crowd_mesh_vert_texels_shadow_spv);
         mCrowdNear = EmulatedCrowdNearPass(*mDevice, color, depth, name);
     }
     return {};
@@ -120,8 +122,21 @@ void EmulatedTerrainBackend::recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame&
     mCrowdMesh.record(*mFrame, crowd, descriptors);
 }
 
+void EmulatedTerrainBackend::recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame,
+                                               const glm::mat4& viewProjection) {
+    CrowdDescriptors descriptors(CrowdDescriptors::Mode::Texels, crowd, frame.slot, mFrameUniforms, frame.uniforms,
+                                 mShadowMaps.writes());
+    mCrowdNear.recordShadow(*mFrame, crowd, descriptors, viewProjection);
+    mCrowdMesh.recordShadow(*mFrame, crowd, descriptors, viewProjection);
+}
+
 void EmulatedTerrainBackend::drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) {
     mCharacterPass.record(*mFrame, instance, path, mFrameInfo.wireframe, characterPush());
+}
+
+void EmulatedTerrainBackend::drawCharacterShadow(const CharacterInstance& instance, backend::CharacterPath path,
+                                                 const glm::mat4& viewProjection) {
+    mCharacterPass.recordShadow(*mFrame, instance, path, viewProjection, characterPush());
 }
 
 uint64_t EmulatedTerrainBackend::characterPassBytes() const {
