@@ -49,9 +49,9 @@ HulldomainCharacterPatchPass::HulldomainCharacterPatchPass(gpu::Device& device, 
             device, desc,
             characterLayout(device, CharacterBindings::Draw, graphics, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                             ShadowCasterPipeline::kPushBytes, graphics, desc.name + ".shadow.layout"),
-            graphics, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT,
-            single ? Spirv(hulldomain_character_patch_tese_single_shadow_spv)
-                   : Spirv(hulldomain_character_patch_tese_shadow_spv));
+            graphics,
+            {{VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, single ? Spirv(hulldomain_character_patch_tese_single_shadow_spv)
+                                                                  : Spirv(hulldomain_character_patch_tese_shadow_spv)}});
     }
 }
 

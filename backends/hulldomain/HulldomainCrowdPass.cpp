@@ -52,7 +52,7 @@ HulldomainCrowdPass::HulldomainCrowdPass(gpu::Device& device, VkFormat colorForm
         device, desc,
         CrowdDescriptors::layout(device, Mode::Storage, graphics, "hulldomain.crowd.near.shadow.layout", {},
                                  ShadowCasterPipeline::kPushBytes, graphics),
-        graphics, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, hulldomain_character_patch_tese_crowd_shadow_spv);
+        graphics, {{VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, hulldomain_character_patch_tese_crowd_shadow_spv}});
     mMesh = CrowdMeshPass(device, Mode::Storage, crowd_mesh_vert_spv, character_frag_crowd_spv, colorFormat, depthFormat,
                           "hulldomain.crowd.mesh", crowd_mesh_vert_shadow_spv);
 }

@@ -44,6 +44,7 @@ protected:
         caps.terrainModes = 0b111;
         caps.subdiv = true;
         caps.crowd = true;
+        caps.cascadedShadows = true;
         return caps;
     }
 
@@ -89,6 +90,10 @@ protected:
     void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) override {
         mCharacterPatches.record(*mFrame, instance, path, mFrameInfo.wireframe, characterPush());
     }
+    void drawCharacterShadow(const CharacterInstance& instance, backend::CharacterPath path,
+                             const glm::mat4& viewProjection) override {
+        mCharacterPatches.recordShadow(*mFrame, instance, path, viewProjection, characterPush());
+    }
 
     // Instanced crowds: the lists, commands and near slots are storage
     // buffers written by compute (ComputeCrowdCullPass); the meshlets and the
@@ -111,6 +116,12 @@ protected:
         CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
                                      frame.uniforms, mShadowMaps.writes());
         mCrowdPass.recordDraws(*mFrame, crowd, crowd.extensionAs<MeshshaderCrowdResources>(), descriptors);
+    }
+    void recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame, const glm::mat4& viewProjection) override {
+        CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
+                                     frame.uniforms, mShadowMaps.writes());
+        mCrowdPass.recordShadow(*mFrame, crowd, crowd.extensionAs<MeshshaderCrowdResources>(), descriptors,
+                                viewProjection);
     }
     // crowd.cull, crowd.skin and a draw pass per tier.
     uint32_t crowdPassCount() const override { return 2 + TS_LOD_TIERS; }

@@ -9,8 +9,13 @@
 #include "common_frame.glsl"
 
 #ifdef TS_SHADOW_CASTER
+// Where the matrix lies in the push constants: after the task stage's own
+// on meshshader (TS_SHADOW_CASTER_OFFSET=16), else first.
+#ifndef TS_SHADOW_CASTER_OFFSET
+#define TS_SHADOW_CASTER_OFFSET 0
+#endif
 layout(push_constant) uniform ShadowCasterBlock {
-    mat4 viewProjection; // world to the cascade's clip space
+    layout(offset = TS_SHADOW_CASTER_OFFSET) mat4 viewProjection; // world to the cascade's clip space
 } uShadowCaster;
 
 vec4 tsClipPosition(vec4 world) { return uShadowCaster.viewProjection * world; }

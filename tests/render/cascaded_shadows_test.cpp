@@ -106,5 +106,5 @@ TEST_P(CascadedShadows, FallWhereTheSunAndTerrainPutThem) {
         << "the cascaded shadow is not where the sun puts the character's";
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryBackend, CascadedShadows, ::testing::Values("r2vb", "streamout", "hulldomain"),
+INSTANTIATE_TEST_SUITE_P(EveryBackend, CascadedShadows, ::testing::Values("r2vb", "streamout", "hulldomain", "meshshader"),
                          [](const auto& test) { return test.param; });

@@ -27,7 +27,7 @@ CrowdPipeline::CrowdPipeline(gpu::Device& device, CrowdDescriptors::Mode mode, s
     mShadow = ShadowCasterPipeline(device, desc,
                                    CrowdDescriptors::layout(device, mode, vertexStage, name + ".shadow.layout", {},
                                                             ShadowCasterPipeline::kPushBytes, vertexStage),
-                                   vertexStage, VK_SHADER_STAGE_VERTEX_BIT, casterVertex);
+                                   vertexStage, {{VK_SHADER_STAGE_VERTEX_BIT, casterVertex}});
 }
 
 void CrowdPipeline::record(gpu::FrameContext& frame, const char* passName, GpuCrowd& crowd,

@@ -56,9 +56,9 @@ EmulatedCharacterPass::EmulatedCharacterPass(gpu::Device& device, const std::str
             device, desc,
             characterLayout(device, CharacterBindings::Draw, vertexStage, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER,
                             ShadowCasterPipeline::kPushBytes, vertexStage, desc.name + ".shadow.layout"),
-            vertexStage, VK_SHADER_STAGE_VERTEX_BIT,
-            single ? std::span<const uint32_t>(character_emulated_vert_single_shadow_spv)
-                   : std::span<const uint32_t>(character_emulated_vert_shadow_spv));
+            vertexStage,
+            {{VK_SHADER_STAGE_VERTEX_BIT, single ? std::span<const uint32_t>(character_emulated_vert_single_shadow_spv)
+                                                 : std::span<const uint32_t>(character_emulated_vert_shadow_spv)}});
     }
 }
 

@@ -8,11 +8,12 @@ namespace tessera::backends {
 
 ShadowCasterPipeline::ShadowCasterPipeline(gpu::Device& device, gpu::GraphicsPipelineDesc desc,
                                            gpu::PipelineLayout layout, VkShaderStageFlags pushStages,
-                                           VkShaderStageFlagBits stage, std::span<const uint32_t> caster)
-    : mLayout(std::move(layout)), mPushStages(pushStages) {
+                                           const std::vector<gpu::ShaderStage>& casters, uint32_t pushOffset)
+    : mLayout(std::move(layout)), mPushStages(pushStages), mPushOffset(pushOffset) {
     std::erase_if(desc.stages, [](const gpu::ShaderStage& s) { return s.stage == VK_SHADER_STAGE_FRAGMENT_BIT; });
     for (gpu::ShaderStage& s : desc.stages)
-        if (s.stage == stage) s.spirv = caster;
+        for (const gpu::ShaderStage& caster : casters)
+            if (s.stage == caster.stage) s.spirv = caster.spirv;
     desc.name += ".shadow";
     desc.layout = &mLayout;
     desc.polygonMode = VK_POLYGON_MODE_FILL;
@@ -30,7 +31,7 @@ ShadowCasterPipeline::ShadowCasterPipeline(gpu::Device& device, gpu::GraphicsPip
 
 void ShadowCasterPipeline::bind(VkCommandBuffer cmd, const glm::mat4& viewProjection) const {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
-    vkCmdPushConstants(cmd, mLayout.handle(), mPushStages, 0, kPushBytes, &viewProjection);
+    vkCmdPushConstants(cmd, mLayout.handle(), mPushStages, mPushOffset, kPushBytes, &viewProjection);
 }
 
 } // namespace tessera::backends

@@ -37,9 +37,15 @@ bool msCrowdMeshletItem(uint item, out uvec2 drawn) {
     uint m = item - k * draw.meshletCount;
     drawn = uvec2(draw.listBase + k, draw.firstMeshlet + m);
     if (k >= crowdArgs[draw.countWord]) return false;
+#ifdef TS_SHADOW_CASTER
+    // A caster may shadow the view from outside it or facing away from the
+    // camera: no frustum or normal-cone test against the camera.
+    return true;
+#else
     CrowdInstance instance = tsCrowdInstance(crowdLists[drawn.x].instance);
     return tsCrowdMeshletVisible(crowdMeshlets[drawn.y], tsCrowdWorld(instance), max(instance.animation.y, 1e-6),
                                  uCrowd.lod);
+#endif
 }
 
 // The item this invocation tests: the workgroups run in rows of

@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 #include <span>
+#include <vector>
 
 namespace tessera::backends {
 
@@ -20,18 +21,23 @@ public:
     static constexpr uint32_t kPushBytes = sizeof(glm::mat4);
 
     ShadowCasterPipeline() = default;
-    /// From the main pass's `desc`: `stage`'s SPIR-V replaced by `caster`,
-    /// the fragment stage dropped, no colour targets, the shadow map's depth
+    /// From the main pass's `desc`: the stages of `casters` replaced by
+    /// their SPIR-V (the stage writing gl_Position; meshshader's task stage
+    /// too, which culls against the camera), the fragment stage dropped, no colour targets, the shadow map's depth
     /// format, no face culling (the sun's projection has no Y flip, and
     /// either side of a closed mesh casts), the casters' depth bias, through
-    /// `layout` (the main layout's bindings plus kPushBytes of push
-    /// constants for `pushStages`), named `desc.name` + ".shadow".
+    /// `layout` (the main layout's bindings and push constants for
+    /// `pushStages`, with kPushBytes more at `pushOffset` for the matrix),
+    /// named `desc.name` + ".shadow".
     ShadowCasterPipeline(gpu::Device& device, gpu::GraphicsPipelineDesc desc, gpu::PipelineLayout layout,
-                         VkShaderStageFlags pushStages, VkShaderStageFlagBits stage, std::span<const uint32_t> caster);
+                         VkShaderStageFlags pushStages, const std::vector<gpu::ShaderStage>& casters,
+                         uint32_t pushOffset = 0);
 
     bool valid() const { return mPipeline.valid(); }
     /// The layout the draws push their descriptors through.
     const gpu::PipelineLayout& layout() const { return mLayout; }
+    /// The stages every push constant into layout() names.
+    VkShaderStageFlags pushStages() const { return mPushStages; }
     /// Binds the pipeline and pushes the cascade's `viewProjection`.
     void bind(VkCommandBuffer cmd, const glm::mat4& viewProjection) const;
 
@@ -39,6 +45,7 @@ private:
     gpu::PipelineLayout mLayout;
     gpu::Pipeline mPipeline;
     VkShaderStageFlags mPushStages = 0;
+    uint32_t mPushOffset = 0;
 };
 
 } // namespace tessera::backends
