@@ -101,10 +101,10 @@ protected:
                                      frame.uniforms, mShadowMaps.writes());
         mCrowdPass.recordDraws(*mFrame, crowd, descriptors);
     }
-    void recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame, const glm::mat4& viewProjection) override {
+    void recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame, const shader::ShadowCasterPush& caster) override {
         CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
                                      frame.uniforms, mShadowMaps.writes());
-        mCrowdPass.recordShadow(*mFrame, crowd, descriptors, viewProjection);
+        mCrowdPass.recordShadow(*mFrame, crowd, descriptors, caster);
     }
     uint32_t crowdPassCount() const override { return 2 + TS_LOD_TIERS; }
 
@@ -127,8 +127,8 @@ protected:
     }
 
     void drawCharacterShadow(const CharacterInstance& instance, backend::CharacterPath path,
-                             const glm::mat4& viewProjection) override {
-        mCharacterPatches.recordShadow(*mFrame, instance, path, viewProjection, characterPush());
+                             const shader::ShadowCasterPush& caster) override {
+        mCharacterPatches.recordShadow(*mFrame, instance, path, caster, characterPush());
     }
 
     void drawTessellated(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw) override {

@@ -63,10 +63,10 @@ void HulldomainCharacterPatchPass::record(gpu::FrameContext& frame, const Charac
 }
 
 void HulldomainCharacterPatchPass::recordShadow(gpu::FrameContext& frame, const CharacterInstance& instance,
-                                                backend::CharacterPath path, const glm::mat4& viewProjection,
+                                                backend::CharacterPath path, const shader::ShadowCasterPush& caster,
                                                 const CharacterPushFn& push) {
     const ShadowCasterPipeline& shadow = mShadow[path == backend::CharacterPath::SinglePass ? 1 : 0];
-    shadow.bind(frame.cmd(), viewProjection);
+    shadow.bind(frame.cmd(), caster);
     drawPatches(frame.cmd(), shadow.layout(), instance, push);
 }
 

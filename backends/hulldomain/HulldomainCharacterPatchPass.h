@@ -25,9 +25,9 @@ public:
     void record(gpu::FrameContext& frame, const CharacterInstance& instance, backend::CharacterPath path,
                 bool wireframe, const CharacterPushFn& push);
     /// Draws one instance as a caster into the open shadow layer of the
-    /// cascade `viewProjection` (outside the main pass).
+    /// cascade `caster` (outside the main pass).
     void recordShadow(gpu::FrameContext& frame, const CharacterInstance& instance, backend::CharacterPath path,
-                      const glm::mat4& viewProjection, const CharacterPushFn& push);
+                      const shader::ShadowCasterPush& caster, const CharacterPushFn& push);
 
 private:
     /// Binds the cage and the instance's descriptors through `layout` and

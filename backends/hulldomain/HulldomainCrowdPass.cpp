@@ -6,6 +6,7 @@
 #include "crowd_mesh.vert.spv.h"
 #include "crowd_mesh.vert_shadow.spv.h"
 #include "hulldomain_character_patch.tesc_crowd.spv.h"
+#include "hulldomain_character_patch.tesc_crowd_shadow.spv.h"
 #include "hulldomain_character_patch.tese_crowd.spv.h"
 #include "hulldomain_character_patch.tese_crowd_shadow.spv.h"
 #include "hulldomain_character_patch.vert_crowd.spv.h"
@@ -52,7 +53,8 @@ HulldomainCrowdPass::HulldomainCrowdPass(gpu::Device& device, VkFormat colorForm
         device, desc,
         CrowdDescriptors::layout(device, Mode::Storage, graphics, "hulldomain.crowd.near.shadow.layout", {},
                                  ShadowCasterPipeline::kPushBytes, graphics),
-        graphics, {{VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, hulldomain_character_patch_tese_crowd_shadow_spv}});
+        graphics, {{VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, hulldomain_character_patch_tesc_crowd_shadow_spv},
+                   {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, hulldomain_character_patch_tese_crowd_shadow_spv}});
     mMesh = CrowdMeshPass(device, Mode::Storage, crowd_mesh_vert_spv, character_frag_crowd_spv, colorFormat, depthFormat,
                           "hulldomain.crowd.mesh", crowd_mesh_vert_shadow_spv);
 }
@@ -73,10 +75,10 @@ void HulldomainCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
 }
 
 void HulldomainCrowdPass::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
-                                       const glm::mat4& viewProjection) {
-    mNearShadow.bind(frame.cmd(), viewProjection);
+                                       const shader::ShadowCasterPush& caster) {
+    mNearShadow.bind(frame.cmd(), caster);
     drawNear(frame.cmd(), mNearShadow.layout(), crowd, descriptors);
-    mMesh.recordShadow(frame, crowd, descriptors, viewProjection);
+    mMesh.recordShadow(frame, crowd, descriptors, caster);
 }
 
 void HulldomainCrowdPass::drawNear(VkCommandBuffer cmd, const gpu::PipelineLayout& layout, GpuCrowd& crowd,

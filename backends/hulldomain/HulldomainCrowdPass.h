@@ -32,9 +32,9 @@ public:
     /// Inside the main pass: each tier's draws (crowd.near, crowd.middle, crowd.far).
     void recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors);
     /// Outside the main pass: every tier's draws as casters into the open
-    /// shadow layer of the cascade `viewProjection`.
+    /// shadow layer of the cascade `caster`.
     void recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
-                      const glm::mat4& viewProjection);
+                      const shader::ShadowCasterPush& caster);
 
 private:
     /// The near tier's indirect tessellated draws, per creature its

@@ -91,8 +91,8 @@ protected:
         mCharacterPatches.record(*mFrame, instance, path, mFrameInfo.wireframe, characterPush());
     }
     void drawCharacterShadow(const CharacterInstance& instance, backend::CharacterPath path,
-                             const glm::mat4& viewProjection) override {
-        mCharacterPatches.recordShadow(*mFrame, instance, path, viewProjection, characterPush());
+                             const shader::ShadowCasterPush& caster) override {
+        mCharacterPatches.recordShadow(*mFrame, instance, path, caster, characterPush());
     }
 
     // Instanced crowds: the lists, commands and near slots are storage
@@ -117,11 +117,11 @@ protected:
                                      frame.uniforms, mShadowMaps.writes());
         mCrowdPass.recordDraws(*mFrame, crowd, crowd.extensionAs<MeshshaderCrowdResources>(), descriptors);
     }
-    void recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame, const glm::mat4& viewProjection) override {
+    void recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame, const shader::ShadowCasterPush& caster) override {
         CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
                                      frame.uniforms, mShadowMaps.writes());
         mCrowdPass.recordShadow(*mFrame, crowd, crowd.extensionAs<MeshshaderCrowdResources>(), descriptors,
-                                viewProjection);
+                                caster);
     }
     // crowd.cull, crowd.skin and a draw pass per tier.
     uint32_t crowdPassCount() const override { return 2 + TS_LOD_TIERS; }

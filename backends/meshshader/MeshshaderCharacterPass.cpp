@@ -74,10 +74,10 @@ void MeshshaderCharacterPass::record(gpu::FrameContext& frame, const CharacterIn
 }
 
 void MeshshaderCharacterPass::recordShadow(gpu::FrameContext& frame, const CharacterInstance& instance,
-                                           backend::CharacterPath path, const glm::mat4& viewProjection,
+                                           backend::CharacterPath path, const shader::ShadowCasterPush& caster,
                                            const CharacterPushFn& push) {
     const ShadowCasterPipeline& shadow = mShadow[path == backend::CharacterPath::SinglePass ? 1 : 0];
-    shadow.bind(frame.cmd(), viewProjection);
+    shadow.bind(frame.cmd(), caster);
     drawTasks(frame, shadow.layout(), shadow.pushStages(), instance, push);
 }
 

@@ -27,9 +27,9 @@ public:
     void record(gpu::FrameContext& frame, const CharacterInstance& instance, backend::CharacterPath path,
                 bool wireframe, const CharacterPushFn& push);
     /// Records `instance` as a caster into the open shadow layer of the
-    /// cascade `viewProjection` (outside the main pass).
+    /// cascade `caster` (outside the main pass).
     void recordShadow(gpu::FrameContext& frame, const CharacterInstance& instance, backend::CharacterPath path,
-                      const glm::mat4& viewProjection, const CharacterPushFn& push);
+                      const shader::ShadowCasterPush& caster, const CharacterPushFn& push);
 
     /// Bytes of the pattern tables.
     uint64_t tableBytes() const { return mTables.bytes(); }

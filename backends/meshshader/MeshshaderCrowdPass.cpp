@@ -137,10 +137,10 @@ void MeshshaderCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
 
 void MeshshaderCrowdPass::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd,
                                        MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors,
-                                       const glm::mat4& viewProjection) {
+                                       const shader::ShadowCasterPush& caster) {
     for (uint32_t tier = TS_LOD_NEAR; tier <= TS_LOD_FAR; ++tier) {
         const ShadowCasterPipeline& shadow = tier == TS_LOD_NEAR ? mNearShadow : mMeshletsShadow;
-        shadow.bind(frame.cmd(), viewProjection);
+        shadow.bind(frame.cmd(), caster);
         drawTier(frame.cmd(), shadow.layout(), shadow.pushStages(), tier, crowd, resources, descriptors);
     }
 }

@@ -36,10 +36,10 @@ public:
     void recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd, MeshshaderCrowdResources& resources,
                      CrowdDescriptors& descriptors);
     /// Outside the main pass: every tier's draws as casters into the open
-    /// shadow layer of the cascade `viewProjection` (the mesh stages' caster
+    /// shadow layer of the cascade `caster` (the mesh stages' caster
     /// variants; the meshlets' task stage without its camera culling).
     void recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, MeshshaderCrowdResources& resources,
-                      CrowdDescriptors& descriptors, const glm::mat4& viewProjection);
+                      CrowdDescriptors& descriptors, const shader::ShadowCasterPush& caster);
 
     /// Bytes of the near tier's pattern tables.
     uint64_t tableBytes() const { return mTables.bytes(); }

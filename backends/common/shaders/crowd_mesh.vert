@@ -25,6 +25,11 @@ layout(location = 5) flat out vec4 outCrowdShade;
 
 void main() {
     CrowdListEntry entry = tsCrowdEntry(inEntry);
+    // A caster outside the cascade's reach: none of its vertices' work.
+    if (tsShadowCasterCulled(tsCrowdInstance(entry.instance).sphere)) {
+        gl_Position = tsCulledPosition();
+        return;
+    }
     // Middle and far tiers: no near level to compute.
     tsCrowdSelectAtLevel(entry, 1.0);
     CrowdBakedPoint p = tsCrowdBakedPoint(tsCrowdBakedMesh(entry), uint(gl_VertexIndex));

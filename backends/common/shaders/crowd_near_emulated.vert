@@ -43,6 +43,11 @@ void main() {
     s.flags = bits.y;
     s.coverage = uintBitsToFloat(bits.z);
     s.level = uintBitsToFloat(bits.w);
+    // A caster outside the cascade's reach: none of its vertices' work.
+    if (tsShadowCasterCulled(tsCrowdInstance(s.instance).sphere)) {
+        gl_Position = tsCulledPosition();
+        return;
+    }
     CrowdListEntry entry = tsCrowdNearEntry(s, slot);
     tsCrowdSelectAtLevel(entry, s.level);
     CrowdCharacter c = uCrowd.characters[min(tsCrowdInstance(s.instance).ids.y, TS_CROWD_MAX_CHARACTERS - 1u)];

@@ -14,6 +14,20 @@
 #include <cstring>
 
 namespace tessera::backends {
+namespace {
+
+// The world sphere around a character placed by `world`: its asset's box
+// (the compressed cage's, bind pose) with a quarter more radius for the
+// limbs an animation swings out of it.
+glm::vec4 boundingSphere(const GpuCharacter& character, const glm::mat4& world) {
+    const glm::vec3 centre = 0.5f * (character.boxMin() + character.boxMax());
+    const float scale = std::max({glm::length(glm::vec3(world[0])), glm::length(glm::vec3(world[1])),
+                                  glm::length(glm::vec3(world[2]))});
+    const float radius = 1.25f * 0.5f * glm::length(character.boxMax() - character.boxMin()) * scale;
+    return glm::vec4(glm::vec3(world * glm::vec4(centre, 1.0f)), radius);
+}
+
+} // namespace
 
 gpu::PipelineLayout characterLayout(gpu::Device& device, CharacterBindings bindings, VkShaderStageFlags stages,
                                     VkDescriptorType cageType, uint32_t pushConstantBytes,
@@ -75,6 +89,7 @@ void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& dra
                             draw.lodColors ? 1.0f : 0.0f);
         instance.uniforms =
             mFrame->pushUniform(character->uniforms(item.world, instance.level, draw.displacement && near, lod));
+        instance.sphere = boundingSphere(*character, item.world);
         // Only the used joints are bound: the shaders index the palette by the
         // cage's joints, all below paletteSize (GpuCharacter checks them), and
         // a 16 KiB block per instance would fill the frame's uniform ring.
@@ -102,8 +117,14 @@ void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& dra
     // below, the crowds and the terrain after).
     if (mCascadedShadows) {
         suspendMainPass();
-        mShadowMaps.record(*mFrame, "shadows.characters", [&](uint32_t, const glm::mat4& viewProjection) {
-            for (const CharacterInstance& instance : instances) drawCharacterShadow(instance, draw.path, viewProjection);
+        mShadowMaps.record(*mFrame, "shadows.characters", [&](uint32_t, const shader::ShadowCasterPush& caster) {
+            for (const CharacterInstance& instance : instances) {
+                // The cull per cascade, on the CPU: the crowds' casters run
+                // the same test in their shaders.
+                const float viewDepth = -(mFrameInfo.view * glm::vec4(glm::vec3(instance.sphere), 1.0f)).z;
+                if (!shader::tsShadowCasterOutside(instance.sphere, viewDepth, caster.viewProjection, caster.cull))
+                    drawCharacterShadow(instance, draw.path, caster);
+            }
         });
         ++mReport.passes;
     }
@@ -160,8 +181,8 @@ void BasicCharacterBackend::drawCrowd(backend::CrowdHandle handle, const backend
     recordCrowdPasses(*crowd, frame);
     recordCrowdCountsCopy(mFrame->cmd(), *crowd, frame.slot);
     if (mCascadedShadows) {
-        mShadowMaps.record(*mFrame, "shadows.crowd", [&](uint32_t, const glm::mat4& viewProjection) {
-            recordCrowdShadow(*crowd, frame, viewProjection);
+        mShadowMaps.record(*mFrame, "shadows.crowd", [&](uint32_t, const shader::ShadowCasterPush& caster) {
+            recordCrowdShadow(*crowd, frame, caster);
         });
         ++mReport.passes;
     }

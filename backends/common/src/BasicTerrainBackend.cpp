@@ -78,7 +78,9 @@ Status BasicTerrainBackend::initialize(const backend::BackendInitInfo& info) {
     mSplatPass = TerrainSplatPass(*mDevice, caps.name);
     mSunPass = TerrainSunPass(*mDevice, caps.name);
     mShadowPass = CharacterShadowPass(*mDevice, caps.name);
-    mShadowMaps = CascadedShadowMaps(*mDevice, caps.name);
+    mShadowMaps = CascadedShadowMaps(
+        *mDevice, caps.name,
+        scene::ShadowCascadeFit::Settings::forDevice(info.features.isCpu ? lod::DeviceClass::Cpu : lod::DeviceClass::Gpu));
     mSkyPass = SkyPass(*mDevice, caps.name, static_cast<VkFormat>(info.colorFormat),
                        static_cast<VkFormat>(info.depthFormat));
     mResolvePass = TerrainResolvePass(*mDevice, caps.name, terrainResolveMode(), static_cast<VkFormat>(info.colorFormat),
@@ -130,7 +132,8 @@ void BasicTerrainBackend::beginFrame(const backend::FrameInfo& frame) {
     // Cascaded shadows replace the blobs: no mask is drawn, none is read.
     if (mCascadedShadows) mFrameInfo.shadowCasters = {};
     mFrameUniforms = mFrame->pushUniform(buildFrameUniforms(mFrameInfo, mDeferTerrain));
-    mShadowMaps.beginFrame(*mFrame, mCascadedShadows ? frame.shadowCascades : std::span<const scene::ShadowCascade>{});
+    mShadowMaps.beginFrame(*mFrame, mCascadedShadows ? frame.shadowCascades : std::span<const scene::ShadowCascade>{},
+                           frame.sunDirection);
     mMainPassOpen = false;
     mMainPassStarted = false;
     mResolveTerrain = nullptr;

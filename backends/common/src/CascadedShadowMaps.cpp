@@ -18,19 +18,22 @@ constexpr VkPipelineStageFlags2 kReaders =
 
 } // namespace
 
-CascadedShadowMaps::CascadedShadowMaps(gpu::Device& device, const std::string& backendName) : mDevice(&device) {
-    const scene::ShadowCascadeFit::Settings fit;
-    mMap = gpu::ShadowMapArray(device, fit.resolution, scene::ShadowCascadeFit::kMaxCascades,
-                               backendName + ".shadowCascades");
+CascadedShadowMaps::CascadedShadowMaps(gpu::Device& device, const std::string& backendName,
+                                       const scene::ShadowCascadeFit::Settings& settings)
+    : mDevice(&device), mSettings(settings) {
+    mMap = gpu::ShadowMapArray(device, settings.resolution, settings.cascadeCount, backendName + ".shadowCascades");
 }
 
-void CascadedShadowMaps::beginFrame(gpu::FrameContext& frame, std::span<const scene::ShadowCascade> cascades) {
-    // The host fits the cascades with ShadowCascadeFit's default settings,
-    // whose resolution the layers have; more cascades than layers is the
+void CascadedShadowMaps::beginFrame(gpu::FrameContext& frame, std::span<const scene::ShadowCascade> cascades,
+                                    const glm::vec3& towardsSun) {
+    // The host fits the cascades with the device's settings, whose
+    // resolution and count the layers have; more cascades than layers is the
     // host's error, fewer leaves the last layers unread.
     mCascades = cascades.first(std::min<size_t>(cascades.size(), mMap.layers()));
     mWritten = false;
-    mUniformInfo = frame.pushUniform(scene::buildShadowCascadeUniforms(mCascades, mMap.size())).descriptor();
+    for (size_t i = 0; i < mCascades.size(); ++i) mPushes[i] = scene::buildShadowCasterPush(mCascades, i, towardsSun);
+    mUniformInfo =
+        frame.pushUniform(scene::buildShadowCascadeUniforms(mCascades, mMap.size(), mSettings.pcfTaps)).descriptor();
     mMapInfo = mMap.descriptor();
     mWrites = {bufferWrite(TS_BINDING_SHADOW_CASCADES, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &mUniformInfo),
                imageWrite(TS_BINDING_SHADOW_MAP, &mMapInfo)};
@@ -49,7 +52,7 @@ void CascadedShadowMaps::record(gpu::FrameContext& frame, const char* passName, 
     for (uint32_t layer = 0; layer < mCascades.size(); ++layer) {
         mDevice->beginLabel(cmd, kLabels[layer]);
         mMap.beginLayer(cmd, layer, contents);
-        if (draw) draw(layer, mCascades[layer].viewProjection);
+        if (draw) draw(layer, mPushes[layer]);
         mMap.endLayer(cmd);
         mDevice->endLabel(cmd);
     }

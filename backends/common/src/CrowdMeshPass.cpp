@@ -37,10 +37,10 @@ void CrowdMeshPass::record(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescr
 }
 
 void CrowdMeshPass::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
-                                 const glm::mat4& viewProjection) {
+                                 const shader::ShadowCasterPush& caster) {
     for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier)
         mPipeline.recordShadow(frame, crowd, descriptors, crowd.lists().handle(), crowd.indices().handle(),
-                               viewProjection, [&](VkCommandBuffer cmd, uint32_t c) { drawList(cmd, crowd, tier, c); });
+                               caster, [&](VkCommandBuffer cmd, uint32_t c) { drawList(cmd, crowd, tier, c); });
 }
 
 } // namespace tessera::backends

@@ -40,9 +40,9 @@ void CrowdPipeline::record(gpu::FrameContext& frame, const char* passName, GpuCr
 }
 
 void CrowdPipeline::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
-                                 VkBuffer stream, VkBuffer indices, const glm::mat4& viewProjection,
+                                 VkBuffer stream, VkBuffer indices, const shader::ShadowCasterPush& caster,
                                  const std::function<void(VkCommandBuffer cmd, uint32_t creature)>& draw) const {
-    mShadow.bind(frame.cmd(), viewProjection);
+    mShadow.bind(frame.cmd(), caster);
     recordCreatures(frame.cmd(), mShadow.layout(), crowd, descriptors, stream, indices, draw);
 }
 

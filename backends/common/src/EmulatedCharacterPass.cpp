@@ -118,10 +118,10 @@ void EmulatedCharacterPass::record(gpu::FrameContext& frame, const CharacterInst
 }
 
 void EmulatedCharacterPass::recordShadow(gpu::FrameContext& frame, const CharacterInstance& instance,
-                                         backend::CharacterPath path, const glm::mat4& viewProjection,
+                                         backend::CharacterPath path, const shader::ShadowCasterPush& caster,
                                          const CharacterPushFn& push) {
     const ShadowCasterPipeline& shadow = mShadow[path == backend::CharacterPath::SinglePass ? 1 : 0];
-    shadow.bind(frame.cmd(), viewProjection);
+    shadow.bind(frame.cmd(), caster);
     drawPattern(frame, shadow.layout(), instance, push);
 }
 

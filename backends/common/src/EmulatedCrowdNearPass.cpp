@@ -34,9 +34,9 @@ void EmulatedCrowdNearPass::record(gpu::FrameContext& frame, GpuCrowd& crowd, Cr
 }
 
 void EmulatedCrowdNearPass::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
-                                         const glm::mat4& viewProjection) {
+                                         const shader::ShadowCasterPush& caster) {
     mPipeline.recordShadow(frame, crowd, descriptors, crowd.patternCodes().handle(), crowd.patternIndices().handle(),
-                           viewProjection, [&](VkCommandBuffer cmd, uint32_t c) { drawSlots(cmd, crowd, c); });
+                           caster, [&](VkCommandBuffer cmd, uint32_t c) { drawSlots(cmd, crowd, c); });
 }
 
 } // namespace tessera::backends

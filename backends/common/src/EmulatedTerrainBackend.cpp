@@ -123,11 +123,11 @@ void EmulatedTerrainBackend::recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame&
 }
 
 void EmulatedTerrainBackend::recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame,
-                                               const glm::mat4& viewProjection) {
+                                               const shader::ShadowCasterPush& caster) {
     CrowdDescriptors descriptors(CrowdDescriptors::Mode::Texels, crowd, frame.slot, mFrameUniforms, frame.uniforms,
                                  mShadowMaps.writes());
-    mCrowdNear.recordShadow(*mFrame, crowd, descriptors, viewProjection);
-    mCrowdMesh.recordShadow(*mFrame, crowd, descriptors, viewProjection);
+    mCrowdNear.recordShadow(*mFrame, crowd, descriptors, caster);
+    mCrowdMesh.recordShadow(*mFrame, crowd, descriptors, caster);
 }
 
 void EmulatedTerrainBackend::drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) {
@@ -135,8 +135,8 @@ void EmulatedTerrainBackend::drawCharacter(const CharacterInstance& instance, ba
 }
 
 void EmulatedTerrainBackend::drawCharacterShadow(const CharacterInstance& instance, backend::CharacterPath path,
-                                                 const glm::mat4& viewProjection) {
-    mCharacterPass.recordShadow(*mFrame, instance, path, viewProjection, characterPush());
+                                                 const shader::ShadowCasterPush& caster) {
+    mCharacterPass.recordShadow(*mFrame, instance, path, caster, characterPush());
 }
 
 uint64_t EmulatedTerrainBackend::characterPassBytes() const {

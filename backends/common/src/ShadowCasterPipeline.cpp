@@ -29,9 +29,9 @@ ShadowCasterPipeline::ShadowCasterPipeline(gpu::Device& device, gpu::GraphicsPip
     mPipeline = gpu::Pipeline(device, desc);
 }
 
-void ShadowCasterPipeline::bind(VkCommandBuffer cmd, const glm::mat4& viewProjection) const {
+void ShadowCasterPipeline::bind(VkCommandBuffer cmd, const shader::ShadowCasterPush& caster) const {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
-    vkCmdPushConstants(cmd, mLayout.handle(), mPushStages, mPushOffset, kPushBytes, &viewProjection);
+    vkCmdPushConstants(cmd, mLayout.handle(), mPushStages, mPushOffset, kPushBytes, &caster);
 }
 
 } // namespace tessera::backends

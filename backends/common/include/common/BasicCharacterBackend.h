@@ -23,6 +23,7 @@
 #include "common/GpuCharacter.h"
 #include "common/GpuCrowd.h"
 #include "common/GpuObjectTable.h"
+#include "tessera/shaders/ShadowCascades.h"
 
 #include <functional>
 #include <initializer_list>
@@ -39,6 +40,7 @@ struct CharacterInstance {
     gpu::UniformSlice palette;   ///< shader::CharacterPalette
     CompressedCage* compressed = nullptr;  ///< pass 1's output (two-pass only)
     float level = 1.0f;          ///< clamped to the backend's maximum
+    glm::vec4 sphere{0.0f};      ///< world bounding sphere (xyz centre, w radius), for the cull per cascade
 };
 
 /// Which of the shared bindings a character pipeline declares: pass 1 reads
@@ -98,10 +100,10 @@ protected:
     virtual void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) = 0;
     /// Cascaded shadows (a backend that sets BackendCapabilities::
     /// cascadedShadows): pass 2 again as a caster, depth only, into the open
-    /// layer of the cascade whose matrix is `viewProjection`
+    /// layer of the cascade `caster` (matrix and cull per cascade)
     /// (ShadowCasterPipeline), after pass 1 and outside the main pass.
     virtual void drawCharacterShadow(const CharacterInstance& /*instance*/, backend::CharacterPath /*path*/,
-                                     const glm::mat4& /*viewProjection*/) {}
+                                     const shader::ShadowCasterPush& /*caster*/) {}
     /// Bytes of the technique's own character intermediates (render targets,
     /// pattern streams) beyond the compressed cages, for FrameReport.
     virtual uint64_t characterPassBytes() const { return 0; }
@@ -128,9 +130,10 @@ protected:
     virtual void recordCrowdDraws(GpuCrowd& /*crowd*/, const CrowdFrame& /*frame*/) {}
     /// Cascaded shadows: each tier's draws again as casters, depth only, over
     /// the lists recordCrowdPasses made, into the open layer of the cascade
-    /// whose matrix is `viewProjection`; outside the main pass.
+    /// `caster` (its matrix, and its cull per cascade, which the shaders run
+    /// per instance); outside the main pass.
     virtual void recordCrowdShadow(GpuCrowd& /*crowd*/, const CrowdFrame& /*frame*/,
-                                   const glm::mat4& /*viewProjection*/) {}
+                                   const shader::ShadowCasterPush& /*caster*/) {}
     /// GPU passes one drawCrowd records (passes and draws), for FrameReport::passes.
     virtual uint32_t crowdPassCount() const { return 0; }
 

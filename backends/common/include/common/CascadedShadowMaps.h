@@ -14,6 +14,8 @@
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/ShadowMapArray.h"
 #include "tessera/scene/ShadowCascade.h"
+#include "tessera/scene/ShadowCascadeFit.h"
+#include "tessera/shaders/ShadowCascades.h"
 
 #include <array>
 #include <functional>
@@ -26,18 +28,21 @@ namespace tessera::backends {
 class CascadedShadowMaps {
 public:
     /// One cascade's casters: draw into the open depth-only layer `layer`
-    /// with `viewProjection` (world to the cascade's clip space) as the
+    /// with `caster` (the cascade's matrix and cull per cascade) as the
     /// depth-only pipelines' push constant.
-    using DrawCasters = std::function<void(uint32_t layer, const glm::mat4& viewProjection)>;
+    using DrawCasters = std::function<void(uint32_t layer, const shader::ShadowCasterPush& caster)>;
 
     CascadedShadowMaps() = default;
-    /// The layers, as many as scene::ShadowCascadeFit makes at its default
-    /// resolution, named after the backend.
-    CascadedShadowMaps(gpu::Device& device, const std::string& backendName);
+    /// The layers of `settings` (the device's: ShadowCascadeFit::Settings::
+    /// forDevice, as the host fits them), named after the backend.
+    CascadedShadowMaps(gpu::Device& device, const std::string& backendName,
+                       const scene::ShadowCascadeFit::Settings& settings);
 
     /// Starts a frame: `cascades` (empty: no cascaded shadows this frame)
-    /// into this frame's uniforms.
-    void beginFrame(gpu::FrameContext& frame, std::span<const scene::ShadowCascade> cascades);
+    /// into this frame's uniforms, and the casters' pushes for the sun
+    /// towards `towardsSun`.
+    void beginFrame(gpu::FrameContext& frame, std::span<const scene::ShadowCascade> cascades,
+                    const glm::vec3& towardsSun);
     /// This frame draws cascaded shadows.
     bool active() const { return !mCascades.empty(); }
 
@@ -59,7 +64,9 @@ public:
 private:
     gpu::Device* mDevice = nullptr;
     gpu::ShadowMapArray mMap;
+    scene::ShadowCascadeFit::Settings mSettings;
     std::span<const scene::ShadowCascade> mCascades;
+    std::array<shader::ShadowCasterPush, scene::ShadowCascadeFit::kMaxCascades> mPushes{};
     bool mWritten = false;
     VkDescriptorBufferInfo mUniformInfo{};
     VkDescriptorImageInfo mMapInfo{};

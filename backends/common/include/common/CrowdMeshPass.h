@@ -31,9 +31,9 @@ public:
     /// Inside the main pass: GPU passes crowd.middle and crowd.far.
     void record(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors);
     /// Both tiers' draws as casters into the open shadow layer of the
-    /// cascade `viewProjection` (CascadedShadowMaps::record).
+    /// cascade `caster` (CascadedShadowMaps::record).
     void recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
-                      const glm::mat4& viewProjection);
+                      const shader::ShadowCasterPush& caster);
 
 private:
     CrowdPipeline mPipeline;

@@ -47,9 +47,9 @@ public:
                 VkBuffer stream, VkBuffer indices,
                 const std::function<void(VkCommandBuffer cmd, uint32_t creature)>& draw) const;
     /// The same draws through the caster pipeline into the open shadow
-    /// layer of the cascade `viewProjection`, inside the caller's pass.
+    /// layer of the cascade `caster`, inside the caller's pass.
     void recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors, VkBuffer stream,
-                      VkBuffer indices, const glm::mat4& viewProjection,
+                      VkBuffer indices, const shader::ShadowCasterPush& caster,
                       const std::function<void(VkCommandBuffer cmd, uint32_t creature)>& draw) const;
 
 private:

@@ -36,9 +36,9 @@ public:
                 bool wireframe, const CharacterPushFn& push);
     /// Draws one instance as a caster (the evaluation vertex shader's
     /// TS_SHADOW_CASTER variant, depth only) into the open shadow layer of
-    /// the cascade `viewProjection`, outside the main pass.
+    /// the cascade `caster`, outside the main pass.
     void recordShadow(gpu::FrameContext& frame, const CharacterInstance& instance, backend::CharacterPath path,
-                      const glm::mat4& viewProjection, const CharacterPushFn& push);
+                      const shader::ShadowCasterPush& caster, const CharacterPushFn& push);
     /// Starts this frame's pattern stream (the slot's previous contents have retired).
     void beginFrame(uint32_t slot);
     /// Bytes of the pattern streams, for the backend comparison.

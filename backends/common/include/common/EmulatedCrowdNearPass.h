@@ -26,9 +26,9 @@ public:
     /// Inside the main pass: GPU pass crowd.near.
     void record(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors);
     /// The same draws as casters into the open shadow layer of the cascade
-    /// `viewProjection` (CascadedShadowMaps::record).
+    /// `caster` (CascadedShadowMaps::record).
     void recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
-                      const glm::mat4& viewProjection);
+                      const shader::ShadowCasterPush& caster);
 
 private:
     CrowdPipeline mPipeline;

@@ -39,7 +39,7 @@ protected:
     /// Cascaded shadows: pass 2 again through the evaluation vertex shader's
     /// caster variant (EmulatedCharacterPass::recordShadow).
     void drawCharacterShadow(const CharacterInstance& instance, backend::CharacterPath path,
-                             const glm::mat4& viewProjection) final;
+                             const shader::ShadowCasterPush& caster) final;
     uint64_t characterPassBytes() const final;
 
     /// Creates the backend's own factor passes (and the rest of its technique).
@@ -91,7 +91,7 @@ protected:
     /// Cascaded shadows: the same tiers' draws as casters, depth only, their
     /// evaluation and mesh vertex shaders' TS_SHADOW_CASTER variants (no
     /// compute, no stages beyond vertex: what r2vb's generation has).
-    void recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame, const glm::mat4& viewProjection) final;
+    void recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame, const shader::ShadowCasterPush& caster) final;
 
     /// Bytes of the pattern buffers (shared by every frame).
     uint64_t patternBytes() const;
