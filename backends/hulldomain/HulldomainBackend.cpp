@@ -35,6 +35,7 @@ protected:
         caps.terrainModes = 0b111;
         caps.crowd = true;
         caps.subdiv = true;
+        caps.cascadedShadows = true;
         return caps;
     }
 
@@ -92,13 +93,18 @@ protected:
     VkBufferUsageFlags crowdWriteUsage() const override { return VK_BUFFER_USAGE_STORAGE_BUFFER_BIT; }
     void recordCrowdPasses(GpuCrowd& crowd, const CrowdFrame& frame) override {
         CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
-                                     frame.uniforms);
+                                     frame.uniforms, mShadowMaps.writes());
         mCrowdPass.recordCompute(*mFrame, crowd, descriptors, frame.instanceCount);
     }
     void recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame& frame) override {
         CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
-                                     frame.uniforms);
+                                     frame.uniforms, mShadowMaps.writes());
         mCrowdPass.recordDraws(*mFrame, crowd, descriptors);
+    }
+    void recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame, const shader::ShadowCasterPush& caster) override {
+        CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
+                                     frame.uniforms, mShadowMaps.writes());
+        mCrowdPass.recordShadow(*mFrame, crowd, descriptors, caster);
     }
     uint32_t crowdPassCount() const override { return 2 + TS_LOD_TIERS; }
 
@@ -120,13 +126,17 @@ protected:
         mCharacterPatches.record(*mFrame, instance, path, mFrameInfo.wireframe, characterPush());
     }
 
+    void drawCharacterShadow(const CharacterInstance& instance, backend::CharacterPath path,
+                             const shader::ShadowCasterPush& caster) override {
+        mCharacterPatches.recordShadow(*mFrame, instance, path, caster, characterPush());
+    }
+
     void drawTessellated(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw) override {
         const terrain::TessellationSettings& settings = draw.tessellation;
         const bool continuous = settings.mode == backend::TerrainMode::Continuous;
         const gpu::UniformSlice tessUniforms = pushTessUniforms(terrain, settings, 64.0f);
         // The technique's intermediates: the pre-pass's level buffers, one
         // pair per frame in flight.
-        mReport.intermediateBytes = 0;
         for (uint32_t slot = 0; slot < gpu::kFramesInFlight; ++slot)
             mReport.intermediateBytes += terrain.edgeLevels(slot).size() + terrain.patchLevels(slot).size();
         // Continuous mode has one level for the draw: no per-edge pre-pass.

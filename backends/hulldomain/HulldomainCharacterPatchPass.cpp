@@ -8,7 +8,9 @@
 #include "hulldomain_character_patch.tesc.spv.h"
 #include "hulldomain_character_patch.tesc_single.spv.h"
 #include "hulldomain_character_patch.tese.spv.h"
+#include "hulldomain_character_patch.tese_shadow.spv.h"
 #include "hulldomain_character_patch.tese_single.spv.h"
+#include "hulldomain_character_patch.tese_single_shadow.spv.h"
 #include "hulldomain_character_patch.vert.spv.h"
 #include "hulldomain_character_patch.vert_single.spv.h"
 
@@ -41,25 +43,43 @@ HulldomainCharacterPatchPass::HulldomainCharacterPatchPass(gpu::Device& device, 
         desc.frontFace = VK_FRONT_FACE_CLOCKWISE;
         desc.colorFormats = {colorFormat};
         desc.depthFormat = depthFormat;
-        mPipelines[single] = FillWirePipelines(
-            device, desc, std::string("hulldomain.character.") + (single ? "singlePass" : "twoPass"), wireframe);
+        desc.name = std::string("hulldomain.character.") + (single ? "singlePass" : "twoPass");
+        mPipelines[single] = FillWirePipelines(device, desc, desc.name, wireframe);
+        mShadow[single] = ShadowCasterPipeline(
+            device, desc,
+            characterLayout(device, CharacterBindings::Draw, graphics, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                            ShadowCasterPipeline::kPushBytes, graphics, desc.name + ".shadow.layout"),
+            graphics,
+            {{VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, single ? Spirv(hulldomain_character_patch_tese_single_shadow_spv)
+                                                                  : Spirv(hulldomain_character_patch_tese_shadow_spv)}});
     }
 }
 
 void HulldomainCharacterPatchPass::record(gpu::FrameContext& frame, const CharacterInstance& instance,
                                           backend::CharacterPath path, bool wireframe, const CharacterPushFn& push) {
-    VkCommandBuffer cmd = frame.cmd();
-    GpuCharacter& c = *instance.character;
     const int single = path == backend::CharacterPath::SinglePass ? 1 : 0;
-    const gpu::Pipeline& pipeline = mPipelines[single].get(wireframe);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.handle());
+    vkCmdBindPipeline(frame.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines[single].get(wireframe).handle());
+    drawPatches(frame.cmd(), mLayout, instance, push);
+}
+
+void HulldomainCharacterPatchPass::recordShadow(gpu::FrameContext& frame, const CharacterInstance& instance,
+                                                backend::CharacterPath path, const shader::ShadowCasterPush& caster,
+                                                const CharacterPushFn& push) {
+    const ShadowCasterPipeline& shadow = mShadow[path == backend::CharacterPath::SinglePass ? 1 : 0];
+    shadow.bind(frame.cmd(), caster);
+    drawPatches(frame.cmd(), shadow.layout(), instance, push);
+}
+
+void HulldomainCharacterPatchPass::drawPatches(VkCommandBuffer cmd, const gpu::PipelineLayout& layout,
+                                               const CharacterInstance& instance, const CharacterPushFn& push) {
+    GpuCharacter& c = *instance.character;
     const VkDescriptorBufferInfo cage{c.vertices().handle(), 0, VK_WHOLE_SIZE};
     VkDescriptorBufferInfo compressed{c.vertices().handle(), 0, VK_WHOLE_SIZE};
     if (instance.compressed) compressed = {instance.compressed->buffer.handle(), 0, VK_WHOLE_SIZE};
     const VkWriteDescriptorSet writes[2] = {
         bufferWrite(TS_BINDING_CAGE_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &cage),
         bufferWrite(TS_BINDING_COMPRESSED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &compressed)};
-    push(VK_PIPELINE_BIND_POINT_GRAPHICS, CharacterBindings::Draw, mLayout, instance, writes);
+    push(VK_PIPELINE_BIND_POINT_GRAPHICS, CharacterBindings::Draw, layout, instance, writes);
     vkCmdBindIndexBuffer(cmd, c.indices().handle(), 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cmd, c.triangleCount() * 3, 1, 0, 0, 0);
 }

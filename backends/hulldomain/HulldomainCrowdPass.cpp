@@ -4,8 +4,11 @@
 
 #include "character.frag_crowd.spv.h"
 #include "crowd_mesh.vert.spv.h"
+#include "crowd_mesh.vert_shadow.spv.h"
 #include "hulldomain_character_patch.tesc_crowd.spv.h"
+#include "hulldomain_character_patch.tesc_crowd_shadow.spv.h"
 #include "hulldomain_character_patch.tese_crowd.spv.h"
+#include "hulldomain_character_patch.tese_crowd_shadow.spv.h"
 #include "hulldomain_character_patch.vert_crowd.spv.h"
 
 namespace tessera::backends {
@@ -45,8 +48,15 @@ HulldomainCrowdPass::HulldomainCrowdPass(gpu::Device& device, VkFormat colorForm
     desc.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
     desc.patchControlPoints = 3;
     mNear = gpu::Pipeline(device, desc);
+    const VkShaderStageFlags graphics = VK_SHADER_STAGE_ALL_GRAPHICS;
+    mNearShadow = ShadowCasterPipeline(
+        device, desc,
+        CrowdDescriptors::layout(device, Mode::Storage, graphics, "hulldomain.crowd.near.shadow.layout", {},
+                                 ShadowCasterPipeline::kPushBytes, graphics),
+        graphics, {{VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, hulldomain_character_patch_tesc_crowd_shadow_spv},
+                   {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, hulldomain_character_patch_tese_crowd_shadow_spv}});
     mMesh = CrowdMeshPass(device, Mode::Storage, crowd_mesh_vert_spv, character_frag_crowd_spv, colorFormat, depthFormat,
-                          "hulldomain.crowd.mesh");
+                          "hulldomain.crowd.mesh", crowd_mesh_vert_shadow_spv);
 }
 
 void HulldomainCrowdPass::recordCompute(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
@@ -59,15 +69,27 @@ void HulldomainCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
     {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mNear.handle());
         gpu::PassScope pass(frame, "crowd.near");
-        vkCmdBindIndexBuffer(cmd, crowd.indices().handle(), 0, VK_INDEX_TYPE_UINT32);
-        for (uint32_t c = 0; c < crowd.creatures().size(); ++c) {
-            const auto writes = descriptors.writes(c);
-            mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0,
-                                               uint32_t(writes.size()), writes.data());
-            vkCmdDrawIndexedIndirect(cmd, crowd.args().handle(), listArgsOffset(TS_LOD_NEAR, c), 1, 0);
-        }
+        drawNear(cmd, mLayout, crowd, descriptors);
     }
     mMesh.record(frame, crowd, descriptors);
+}
+
+void HulldomainCrowdPass::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
+                                       const shader::ShadowCasterPush& caster) {
+    mNearShadow.bind(frame.cmd(), caster);
+    drawNear(frame.cmd(), mNearShadow.layout(), crowd, descriptors);
+    mMesh.recordShadow(frame, crowd, descriptors, caster);
+}
+
+void HulldomainCrowdPass::drawNear(VkCommandBuffer cmd, const gpu::PipelineLayout& layout, GpuCrowd& crowd,
+                                   CrowdDescriptors& descriptors) {
+    vkCmdBindIndexBuffer(cmd, crowd.indices().handle(), 0, VK_INDEX_TYPE_UINT32);
+    for (uint32_t c = 0; c < crowd.creatures().size(); ++c) {
+        const auto writes = descriptors.writes(c);
+        mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout.handle(), 0,
+                                           uint32_t(writes.size()), writes.data());
+        vkCmdDrawIndexedIndirect(cmd, crowd.args().handle(), listArgsOffset(TS_LOD_NEAR, c), 1, 0);
+    }
 }
 
 } // namespace tessera::backends

@@ -6,11 +6,13 @@
 /// skin the near tier's cages into compressed vertices; then per creature
 /// an indirect tessellated draw (near), an indirect draw of the cage
 /// (middle) and of the far mesh (far), skinned from the baked clips.
+/// Cascaded shadows: the same draws as casters, depth only.
 
 #include "common/ComputeCrowdCullPass.h"
 #include "common/CrowdDescriptors.h"
 #include "common/CrowdMeshPass.h"
 #include "common/GpuCrowd.h"
+#include "common/ShadowCasterPipeline.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/PipelineLayout.h"
@@ -29,12 +31,22 @@ public:
                        uint32_t instanceCount);
     /// Inside the main pass: each tier's draws (crowd.near, crowd.middle, crowd.far).
     void recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors);
+    /// Outside the main pass: every tier's draws as casters into the open
+    /// shadow layer of the cascade `caster`.
+    void recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
+                      const shader::ShadowCasterPush& caster);
 
 private:
+    /// The near tier's indirect tessellated draws, per creature its
+    /// descriptors pushed through `layout`.
+    void drawNear(VkCommandBuffer cmd, const gpu::PipelineLayout& layout, GpuCrowd& crowd,
+                  CrowdDescriptors& descriptors);
+
     gpu::Device* mDevice = nullptr;
     ComputeCrowdCullPass mCull;
     gpu::PipelineLayout mLayout;
     gpu::Pipeline mNear;
+    ShadowCasterPipeline mNearShadow;
     CrowdMeshPass mMesh;
 };
 

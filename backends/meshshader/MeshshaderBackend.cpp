@@ -44,6 +44,7 @@ protected:
         caps.terrainModes = 0b111;
         caps.subdiv = true;
         caps.crowd = true;
+        caps.cascadedShadows = true;
         return caps;
     }
 
@@ -89,6 +90,10 @@ protected:
     void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) override {
         mCharacterPatches.record(*mFrame, instance, path, mFrameInfo.wireframe, characterPush());
     }
+    void drawCharacterShadow(const CharacterInstance& instance, backend::CharacterPath path,
+                             const shader::ShadowCasterPush& caster) override {
+        mCharacterPatches.recordShadow(*mFrame, instance, path, caster, characterPush());
+    }
 
     // Instanced crowds: the lists, commands and near slots are storage
     // buffers written by compute (ComputeCrowdCullPass); the meshlets and the
@@ -103,14 +108,20 @@ protected:
     }
     void recordCrowdPasses(GpuCrowd& crowd, const CrowdFrame& frame) override {
         CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
-                                     frame.uniforms);
+                                     frame.uniforms, mShadowMaps.writes());
         mCrowdPass.recordCompute(*mFrame, crowd, crowd.extensionAs<MeshshaderCrowdResources>(), descriptors,
                                  frame.instanceCount);
     }
     void recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame& frame) override {
         CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
-                                     frame.uniforms);
+                                     frame.uniforms, mShadowMaps.writes());
         mCrowdPass.recordDraws(*mFrame, crowd, crowd.extensionAs<MeshshaderCrowdResources>(), descriptors);
+    }
+    void recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame, const shader::ShadowCasterPush& caster) override {
+        CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
+                                     frame.uniforms, mShadowMaps.writes());
+        mCrowdPass.recordShadow(*mFrame, crowd, crowd.extensionAs<MeshshaderCrowdResources>(), descriptors,
+                                caster);
     }
     // crowd.cull, crowd.skin and a draw pass per tier.
     uint32_t crowdPassCount() const override { return 2 + TS_LOD_TIERS; }
@@ -121,7 +132,7 @@ protected:
         const gpu::UniformSlice tessUniforms = pushTessUniforms(terrain, settings, 64.0f);
         // The technique's intermediates: the pre-pass's level buffers, one
         // pair per frame in flight, and the pattern tables.
-        mReport.intermediateBytes = mTerrainPass.tableBytes();
+        mReport.intermediateBytes += mTerrainPass.tableBytes();
         for (uint32_t slot = 0; slot < gpu::kFramesInFlight; ++slot)
             mReport.intermediateBytes += terrain.edgeLevels(slot).size() + terrain.patchLevels(slot).size();
         // Continuous mode has one level for the draw: no per-edge pre-pass.

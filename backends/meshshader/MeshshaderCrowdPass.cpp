@@ -8,10 +8,13 @@
 
 #include "character.frag_crowd.spv.h"
 #include "meshshader_character.mesh_crowd.spv.h"
+#include "meshshader_character.mesh_crowd_shadow.spv.h"
 #include "meshshader_character.task_crowd.spv.h"
 #include "meshshader_crowd_args.comp.spv.h"
 #include "meshshader_crowd_meshlet.mesh.spv.h"
+#include "meshshader_crowd_meshlet.mesh_shadow.spv.h"
 #include "meshshader_crowd_meshlet.task.spv.h"
+#include "meshshader_crowd_meshlet.task_shadow.spv.h"
 
 #include <vector>
 
@@ -28,6 +31,11 @@ constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 struct TaskPush {
     uint32_t countWord = 0, listBase = 0, first = 0, count = 0;
 };
+
+// The casters' push constants: the task stage's, then the cascade's matrix
+// for the mesh stage (TS_SHADOW_CASTER_OFFSET in CMakeLists.txt).
+constexpr VkShaderStageFlags kShadowPushStages = VK_SHADER_STAGE_TASK_BIT_EXT | VK_SHADER_STAGE_MESH_BIT_EXT;
+static_assert(sizeof(TaskPush) == 16, "the mesh stage's caster matrix follows the task stage's push constants");
 
 uint32_t listOf(uint32_t tier, uint32_t creature) {
     return tier * TS_CROWD_MAX_CHARACTERS + creature;
@@ -48,15 +56,19 @@ MeshshaderCrowdPass::MeshshaderCrowdPass(gpu::Device& device, VkFormat colorForm
         tessellator::MeshTrianglePatternLibrary::uniformFractionalOdd();
     mTables = MeshshaderPatternTables(device, library.keys(), library.triangles(), "meshshader.crowd.near",
                                       library.crowdGroups());
-    mLayout = CrowdDescriptors::layout(device, CrowdDescriptors::Mode::Storage, kStages, "meshshader.crowd.layout",
-                                       {{TS_BINDING_CROWD_INDICES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, kStages},
-                                        {TS_BINDING_MESH_KEYS, kStorage, kStages},
-                                        {TS_BINDING_MESH_TRIANGLES, kStorage, kStages},
-                                        {TS_BINDING_MESH_GROUPS, kStorage, kStages},
-                                        {TS_BINDING_CROWD_MESHLETS, kStorage, kStages},
-                                        {TS_BINDING_CROWD_MESHLET_VERTICES, kStorage, kStages},
-                                        {TS_BINDING_CROWD_MESHLET_TRIANGLES, kStorage, kStages}},
-                                       sizeof(TaskPush), VK_SHADER_STAGE_TASK_BIT_EXT);
+    auto layout = [&](uint32_t pushBytes, VkShaderStageFlags pushStages, const std::string& name) {
+        return CrowdDescriptors::layout(device, CrowdDescriptors::Mode::Storage, kStages, name,
+                                        {{TS_BINDING_CROWD_INDICES, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, kStages},
+                                         {TS_BINDING_MESH_KEYS, kStorage, kStages},
+                                         {TS_BINDING_MESH_TRIANGLES, kStorage, kStages},
+                                         {TS_BINDING_MESH_GROUPS, kStorage, kStages},
+                                         {TS_BINDING_CROWD_MESHLETS, kStorage, kStages},
+                                         {TS_BINDING_CROWD_MESHLET_VERTICES, kStorage, kStages},
+                                         {TS_BINDING_CROWD_MESHLET_TRIANGLES, kStorage, kStages}},
+                                        pushBytes, pushStages);
+    };
+    mLayout = layout(sizeof(TaskPush), VK_SHADER_STAGE_TASK_BIT_EXT, "meshshader.crowd.layout");
+    const uint32_t shadowPushBytes = sizeof(TaskPush) + ShadowCasterPipeline::kPushBytes;
 
     gpu::GraphicsPipelineDesc desc;
     desc.layout = &mLayout;
@@ -72,6 +84,10 @@ MeshshaderCrowdPass::MeshshaderCrowdPass(gpu::Device& device, VkFormat colorForm
                    {VK_SHADER_STAGE_MESH_BIT_EXT, meshshader_character_mesh_crowd_spv},
                    {VK_SHADER_STAGE_FRAGMENT_BIT, character_frag_crowd_spv}};
     mNear = gpu::Pipeline(device, desc);
+    mNearShadow = ShadowCasterPipeline(
+        device, desc, layout(shadowPushBytes, kShadowPushStages, "meshshader.crowd.near.shadow.layout"),
+        kShadowPushStages, {{VK_SHADER_STAGE_MESH_BIT_EXT, meshshader_character_mesh_crowd_shadow_spv}},
+        sizeof(TaskPush));
     // The meshlets keep the meshes' glTF counter-clockwise triangles
     // (meshoptimizer keeps each triangle's order), as crowd_mesh.vert draws them.
     desc.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
@@ -80,6 +96,13 @@ MeshshaderCrowdPass::MeshshaderCrowdPass(gpu::Device& device, VkFormat colorForm
                    {VK_SHADER_STAGE_MESH_BIT_EXT, meshshader_crowd_meshlet_mesh_spv},
                    {VK_SHADER_STAGE_FRAGMENT_BIT, character_frag_crowd_spv}};
     mMeshlets = gpu::Pipeline(device, desc);
+    // The casters' task stage keeps every meshlet (no camera culling).
+    mMeshletsShadow = ShadowCasterPipeline(
+        device, desc, layout(shadowPushBytes, kShadowPushStages, "meshshader.crowd.meshlets.shadow.layout"),
+        kShadowPushStages,
+        {{VK_SHADER_STAGE_TASK_BIT_EXT, meshshader_crowd_meshlet_task_shadow_spv},
+         {VK_SHADER_STAGE_MESH_BIT_EXT, meshshader_crowd_meshlet_mesh_shadow_spv}},
+        sizeof(TaskPush));
 }
 
 void MeshshaderCrowdPass::recordCommands(VkCommandBuffer cmd, GpuCrowd& crowd, MeshshaderCrowdResources& resources) {
@@ -103,7 +126,28 @@ void MeshshaderCrowdPass::recordCompute(gpu::FrameContext& frame, GpuCrowd& crow
 
 void MeshshaderCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
                                       MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors) {
-    VkCommandBuffer cmd = frame.cmd();
+    static const char* const kPassNames[TS_LOD_TIERS] = {"crowd.near", "crowd.middle", "crowd.far"};
+    for (uint32_t tier = TS_LOD_NEAR; tier <= TS_LOD_FAR; ++tier) {
+        gpu::PassScope pass(frame, kPassNames[tier]);
+        vkCmdBindPipeline(frame.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS,
+                          tier == TS_LOD_NEAR ? mNear.handle() : mMeshlets.handle());
+        drawTier(frame.cmd(), mLayout, VK_SHADER_STAGE_TASK_BIT_EXT, tier, crowd, resources, descriptors);
+    }
+}
+
+void MeshshaderCrowdPass::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd,
+                                       MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors,
+                                       const shader::ShadowCasterPush& caster) {
+    for (uint32_t tier = TS_LOD_NEAR; tier <= TS_LOD_FAR; ++tier) {
+        const ShadowCasterPipeline& shadow = tier == TS_LOD_NEAR ? mNearShadow : mMeshletsShadow;
+        shadow.bind(frame.cmd(), caster);
+        drawTier(frame.cmd(), shadow.layout(), shadow.pushStages(), tier, crowd, resources, descriptors);
+    }
+}
+
+void MeshshaderCrowdPass::drawTier(VkCommandBuffer cmd, const gpu::PipelineLayout& layout,
+                                   VkShaderStageFlags pushStages, uint32_t tier, GpuCrowd& crowd,
+                                   MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors) {
     const uint32_t creatures = uint32_t(crowd.creatures().size());
     const auto tables = mTables.descriptors();
     const VkDescriptorBufferInfo groups = mTables.groupsDescriptor();
@@ -119,33 +163,28 @@ void MeshshaderCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
                                            bufferWrite(TS_BINDING_CROWD_MESHLET_VERTICES, kStorage, &meshletVertices),
                                            bufferWrite(TS_BINDING_CROWD_MESHLET_TRIANGLES, kStorage, &meshletTriangles)};
     std::vector<VkWriteDescriptorSet> writes;
-    static const char* const kPassNames[TS_LOD_TIERS] = {"crowd.near", "crowd.middle", "crowd.far"};
-    for (uint32_t tier = TS_LOD_NEAR; tier <= TS_LOD_FAR; ++tier) {
-        gpu::PassScope pass(frame, kPassNames[tier]);
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, tier == TS_LOD_NEAR ? mNear.handle() : mMeshlets.handle());
-        for (uint32_t c = 0; c < creatures; ++c) {
-            const auto shared = descriptors.writes(c);
-            writes.assign(shared.begin(), shared.end());
-            writes.insert(writes.end(), std::begin(extra), std::end(extra));
-            mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout.handle(), 0,
-                                               uint32_t(writes.size()), writes.data());
-            const uint32_t list = listOf(tier, c);
-            TaskPush push;
-            push.countWord = list * TS_CROWD_ARG_DRAW_WORDS + 1;
-            push.listBase = shader::tsCrowdListBase(tier, c, creatures, crowd.maxInstances());
-            if (tier == TS_LOD_NEAR) {
-                push.first = crowd.creatures()[c].cageFirstIndex;
-                push.count = crowd.creatures()[c].cageTriangles;
-            } else {
-                const MeshshaderCrowdResources::MeshletRange range = resources.meshlets(tier, c);
-                push.first = range.first;
-                push.count = range.count;
-            }
-            vkCmdPushConstants(cmd, mLayout.handle(), VK_SHADER_STAGE_TASK_BIT_EXT, 0, sizeof push, &push);
-            mDevice->fn().cmdDrawMeshTasksIndirect(cmd, resources.meshArgs().handle(),
-                                                   VkDeviceSize(list) * sizeof(shader::CrowdMeshCommand), 1,
-                                                   sizeof(shader::CrowdMeshCommand));
+    for (uint32_t c = 0; c < creatures; ++c) {
+        const auto shared = descriptors.writes(c);
+        writes.assign(shared.begin(), shared.end());
+        writes.insert(writes.end(), std::begin(extra), std::end(extra));
+        mDevice->fn().cmdPushDescriptorSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout.handle(), 0,
+                                           uint32_t(writes.size()), writes.data());
+        const uint32_t list = listOf(tier, c);
+        TaskPush push;
+        push.countWord = list * TS_CROWD_ARG_DRAW_WORDS + 1;
+        push.listBase = shader::tsCrowdListBase(tier, c, creatures, crowd.maxInstances());
+        if (tier == TS_LOD_NEAR) {
+            push.first = crowd.creatures()[c].cageFirstIndex;
+            push.count = crowd.creatures()[c].cageTriangles;
+        } else {
+            const MeshshaderCrowdResources::MeshletRange range = resources.meshlets(tier, c);
+            push.first = range.first;
+            push.count = range.count;
         }
+        vkCmdPushConstants(cmd, layout.handle(), pushStages, 0, sizeof push, &push);
+        mDevice->fn().cmdDrawMeshTasksIndirect(cmd, resources.meshArgs().handle(),
+                                               VkDeviceSize(list) * sizeof(shader::CrowdMeshCommand), 1,
+                                               sizeof(shader::CrowdMeshCommand));
     }
 }
 

@@ -14,6 +14,7 @@
 #include "common/CrowdDescriptors.h"
 #include "common/GpuCrowd.h"
 #include "MeshshaderCrowdResources.h"
+#include "common/ShadowCasterPipeline.h"
 #include "MeshshaderPatternTables.h"
 #include "tessera/gpu/ComputePipeline.h"
 #include "tessera/gpu/FrameContext.h"
@@ -34,12 +35,21 @@ public:
     /// Inside the main pass: each tier's draws (crowd.near, crowd.middle, crowd.far).
     void recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd, MeshshaderCrowdResources& resources,
                      CrowdDescriptors& descriptors);
+    /// Outside the main pass: every tier's draws as casters into the open
+    /// shadow layer of the cascade `caster` (the mesh stages' caster
+    /// variants; the meshlets' task stage without its camera culling).
+    void recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, MeshshaderCrowdResources& resources,
+                      CrowdDescriptors& descriptors, const shader::ShadowCasterPush& caster);
 
     /// Bytes of the near tier's pattern tables.
     uint64_t tableBytes() const { return mTables.bytes(); }
 
 private:
     void recordCommands(VkCommandBuffer cmd, GpuCrowd& crowd, MeshshaderCrowdResources& resources);
+    /// One tier's indirect task draws, per creature its descriptors pushed
+    /// through `layout` and its list's push constants for `pushStages`.
+    void drawTier(VkCommandBuffer cmd, const gpu::PipelineLayout& layout, VkShaderStageFlags pushStages,
+                  uint32_t tier, GpuCrowd& crowd, MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors);
 
     gpu::Device* mDevice = nullptr;
     ComputeCrowdCullPass mCull;
@@ -48,6 +58,8 @@ private:
     gpu::PipelineLayout mLayout;
     gpu::Pipeline mNear;
     gpu::Pipeline mMeshlets;
+    ShadowCasterPipeline mNearShadow;
+    ShadowCasterPipeline mMeshletsShadow;
     MeshshaderPatternTables mTables;
 };
 

@@ -53,6 +53,7 @@ protected:
         caps.maxTessFactor = 14.99f;
         caps.terrainModes = 0b111;
         caps.crowd = true;
+        caps.cascadedShadows = true;
         caps.subdiv = true;
         return caps;
     }

@@ -9,6 +9,7 @@
 #include "common_frame.glsl"
 #include "character_common.glsl"
 #include "sky_atmosphere.glsl"
+#include "shadow_receiver.glsl"
 
 layout(set = 0, binding = TS_BINDING_BASE_COLOR) uniform sampler2D uBaseColor;
 layout(set = 0, binding = TS_BINDING_NORMAL_MAP) uniform sampler2D uNormalMap;
@@ -28,6 +29,9 @@ vec3 tsShadeCharacter(vec3 world, vec3 normal, vec3 tangent, vec2 uv) {
     vec3 sun = normalize(frame.sunDirection.xyz);
     float diffuse = max(dot(n, sun), 0.0);
     if (tsFullLook()) {
+        // The other characters' shadows (and its own), from the cascaded
+        // shadow maps, offset along the surface's own normal, not the map's.
+        diffuse *= tsCascadedSunlight(world, normalize(normal));
         // The base colour map holds sRGB-encoded values (glTF's rule); light in
         // linear space. Decoded here rather than by an _SRGB image format so
         // the plain look still reads the bytes as it always did.

@@ -19,22 +19,27 @@ vec3 tsShadowMapCoord(ShadowCascadeUniforms u, uint index, vec3 world, vec3 norm
 }
 
 // Sunlight kept at `world` (1 lit, 0 in shadow), at `viewDepth` metres along
-// the view axis: the cascade it lies in, 3x3 taps a texel apart of the
-// hardware's bilinear comparison (percentage-closer filtering over 4x4
-// texels). Beyond the last cascade, and with no cascades, fully lit.
+// the view axis: the cascade it lies in, n x n taps a texel apart of the
+// hardware's bilinear comparison (n = pcf.x: 3 filters over 4x4 texels, 2
+// over 3x3 for a CPU rasterizer, where each tap is filtered in software,
+// 1 over 2x2). Beyond the last cascade, and with no cascades, fully lit.
 float tsCascadedShadow(ShadowCascadeUniforms u, sampler2DArrayShadow map, vec3 world, vec3 normal, float viewDepth) {
     uint count = uint(u.params.x);
     uint index = tsShadowCascadeIndex(u.farDistances, count, viewDepth);
     if (index >= count) return 1.0;
     vec3 c = tsShadowMapCoord(u, index, world, normal);
     float texel = u.params.y;
+    int taps = int(u.pcf.x);
+    // The taps centred on the receiver: offsets -1, 0, 1 texels for 3,
+    // -0.5 and 0.5 for 2, 0 for 1.
+    vec2 first = c.xy - vec2(0.5 * float(taps - 1) * texel);
     float lit = 0.0;
-    for (int y = -1; y <= 1; ++y) {
-        for (int x = -1; x <= 1; ++x) {
-            lit += texture(map, vec4(c.xy + vec2(x, y) * texel, float(index), c.z));
+    for (int y = 0; y < taps; ++y) {
+        for (int x = 0; x < taps; ++x) {
+            lit += texture(map, vec4(first + vec2(x, y) * texel, float(index), c.z));
         }
     }
-    return lit / 9.0;
+    return lit / float(taps * taps);
 }
 
 #endif

@@ -14,6 +14,7 @@
 #include "tessera/shaders/CharacterShadow.h"
 #include "common_noise.glsl"
 #include "sky_atmosphere.glsl"
+#include "shadow_receiver.glsl"
 
 // What fraction of the sun each terrain texel sees, made by terrain_sun.frag
 // from the height map; sampled bilinearly, which softens the shadow's edge.
@@ -146,8 +147,11 @@ float terrainCharacterLight(vec3 worldPos) {
     return 1.0 - TS_CHARACTER_SHADOW_STRENGTH * fade * textureLod(characterShadowMask, uv, 0.0).r;
 }
 
-float terrainSunVisibility(vec3 worldPos) {
-    return textureLod(sunVisibilityMap, terrainTexcoord(worldPos.xz), 0.0).r * terrainCharacterLight(worldPos);
+// The sun the terrain's own relief (the sun-visibility map) and the
+// characters (blobs or cascaded shadow maps, whichever the frame draws) leave.
+float terrainSunVisibility(vec3 worldPos, vec3 normal) {
+    return textureLod(sunVisibilityMap, terrainTexcoord(worldPos.xz), 0.0).r * terrainCharacterLight(worldPos) *
+           tsCascadedSunlight(worldPos, normal);
 }
 
 // The full look. Runs in the resolve pass (terrain_resolve.glsl) for the
@@ -162,7 +166,7 @@ vec3 shadeTerrainFull(vec3 worldPos, vec3 normal) {
     float footprint = dist * frame.terrainResolve.y / max(facing, 0.05);
     vec3 albedo = terrainAlbedoFull(worldPos, normal, dist, footprint);
     vec3 sun = tsSunDirection();
-    float diffuse = max(dot(normal, sun), 0.0) * terrainSunVisibility(worldPos);
+    float diffuse = max(dot(normal, sun), 0.0) * terrainSunVisibility(worldPos, normal);
     vec3 color = albedo * (frame.sunColor.rgb * diffuse + tsSkyAmbient(normal));
     return tsApplyFog(color, worldPos);
 }

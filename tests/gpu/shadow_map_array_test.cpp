@@ -132,6 +132,26 @@ TEST(ShadowMapArray, DepthPassShadowsOnlyItsLayerBehindTheCaster) {
             EXPECT_EQ(p[1], layer == kDrawnLayer ? 0.0f : 1.0f) << "layer " << layer << ": behind the caster";
             EXPECT_EQ(p[2], 1.0f) << "layer " << layer << ": outside the map";
         }
+
+        // A later write of the same frame (a crowd after the characters)
+        // keeps the layers' depths; the next frame's first write clears them.
+        using Contents = gpu::ShadowMapArray::Contents;
+        auto writeNothing = [&](Contents contents) {
+            device->submitImmediate(
+                [&](VkCommandBuffer cmd) {
+                    map.beginWriting(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, contents);
+                    for (uint32_t layer = 0; layer < kLayers; ++layer) {
+                        map.beginLayer(cmd, layer, contents);
+                        map.endLayer(cmd);
+                    }
+                    map.endWriting(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+                },
+                "shadowMapTest.rewrite");
+        };
+        writeNothing(Contents::Keep);
+        EXPECT_EQ(probe(*device, map, probes())[kDrawnLayer * 3 + 1], 0.0f) << "a kept layer lost its caster";
+        writeNothing(Contents::Clear);
+        EXPECT_EQ(probe(*device, map, probes())[kDrawnLayer * 3 + 1], 1.0f) << "a cleared layer kept its caster";
         device->waitIdle();
     }
     EXPECT_EQ(GpuTestDevice::validationMessages(), messagesBefore) << "validation messages (see stderr)";

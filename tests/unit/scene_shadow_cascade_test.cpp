@@ -223,3 +223,55 @@ TEST(SceneShadowCascadeUniforms, PacksTheCascadesAndSelectsLikeTheFit) {
     EXPECT_EQ(none.params.x, 0.0f);
     EXPECT_EQ(tessera::shader::tsShadowCascadeIndex(none.farDistances, 0u, 1.0f), 0u);
 }
+
+TEST(SceneShadowCascadeUniforms, CullPerCascadeKeepsEveryCasterWhoseShadowACascadeReads) {
+    // Casters one metre in radius standing on flat ground (y = 0) across
+    // the view: each point of a caster and of its shadow on the ground is
+    // a receiver, reading the cascade its view depth selects, and that
+    // cascade must draw the caster; the cull must also skip some.
+    const Camera camera = makeCamera({0.0f, 30.0f, 0.0f}, 30.0f, -20.0f);
+    for (const glm::vec3& sun : {kLowSun, glm::normalize(glm::vec3(0.3f, 0.85f, 0.2f))}) {
+        const std::vector<ShadowCascade> cascades = ShadowCascadeFit().fit(camera, sun);
+        size_t culled = 0;
+        for (float x = -200.0f; x <= 200.0f; x += 7.0f) {
+            for (float z = -300.0f; z <= 20.0f; z += 7.0f) {
+                const glm::vec4 sphere(x, 1.0f, z, 1.0f);
+                const float casterDepth = glm::dot(glm::vec3(sphere) - camera.position(), camera.forward());
+                std::vector<glm::vec3> receivers;
+                for (float t = 0.0f; t <= 1.0f; t += 0.125f) {
+                    const glm::vec3 onBody(x, 2.0f * t, z); // the body's axis, feet to head
+                    receivers.push_back(onBody);
+                    receivers.push_back(onBody - sun * (onBody.y / sun.y)); // its shadow on the ground
+                }
+                for (size_t i = 0; i < cascades.size(); ++i) {
+                    const tessera::shader::ShadowCasterPush push =
+                        tessera::scene::buildShadowCasterPush(cascades, i, sun);
+                    const bool outside =
+                        tessera::shader::tsShadowCasterOutside(sphere, casterDepth, push.viewProjection, push.cull);
+                    culled += outside ? 1 : 0;
+                    if (!outside) continue;
+                    for (const glm::vec3& r : receivers) {
+                        const float depth = glm::dot(r - camera.position(), camera.forward());
+                        const glm::vec3 c = clip(cascades[i], r);
+                        const bool inSquare = std::abs(c.x) <= 1.0f && std::abs(c.y) <= 1.0f;
+                        EXPECT_FALSE(ShadowCascadeFit::cascadeIndex(cascades, depth) == i && inSquare)
+                            << "caster at (" << x << ", " << z << ") culled from cascade " << i
+                            << " whose receiver at depth " << depth << " it shadows";
+                    }
+                }
+            }
+        }
+        EXPECT_GT(culled, 0u);
+    }
+}
+
+TEST(SceneShadowCascadeFit, ACpuRasterizerGetsFewerCascadesAndTaps) {
+    using tessera::lod::DeviceClass;
+    const ShadowCascadeFit::Settings gpu = ShadowCascadeFit::Settings::forDevice(DeviceClass::Gpu);
+    const ShadowCascadeFit::Settings cpu = ShadowCascadeFit::Settings::forDevice(DeviceClass::Cpu);
+    EXPECT_EQ(gpu.cascadeCount, ShadowCascadeFit::kMaxCascades);
+    EXPECT_EQ(gpu.pcfTaps, 3u);
+    EXPECT_LT(cpu.cascadeCount, gpu.cascadeCount);
+    EXPECT_LT(cpu.pcfTaps, gpu.pcfTaps);
+    EXPECT_EQ(tessera::scene::buildShadowCascadeUniforms({}, 1024, cpu.pcfTaps).pcf.x, float(cpu.pcfTaps));
+}

@@ -8,6 +8,7 @@
 // vertices are fetched from a texel buffer (vertex texture / Buffer.Load).
 #extension GL_GOOGLE_include_directive : require
 #include "common_frame.glsl"
+#include "shadow_caster.glsl"
 #include "character_eval.glsl"
 
 layout(location = 0) in vec2 inDomain;     // (u, v), bit-identical with gl_TessCoord.xy
@@ -42,5 +43,5 @@ void main() {
     outNormal = p.normal;
     outTangent = p.tangent;
     outUv = p.uv;
-    gl_Position = frame.viewProjection * vec4(p.world, 1.0);
+    gl_Position = tsClipPosition(vec4(p.world, 1.0));
 }

@@ -11,6 +11,7 @@
 #extension GL_GOOGLE_include_directive : require
 #define TS_CROWD 1
 #include "common_frame.glsl"
+#include "shadow_caster.glsl"
 #include "crowd_baked_mesh.glsl"
 
 layout(location = 0) in uvec4 inEntry; // CrowdListEntry, per instance
@@ -24,6 +25,11 @@ layout(location = 5) flat out vec4 outCrowdShade;
 
 void main() {
     CrowdListEntry entry = tsCrowdEntry(inEntry);
+    // A caster outside the cascade's reach: none of its vertices' work.
+    if (tsShadowCasterCulled(tsCrowdInstance(entry.instance).sphere)) {
+        gl_Position = tsCulledPosition();
+        return;
+    }
     // Middle and far tiers: no near level to compute.
     tsCrowdSelectAtLevel(entry, 1.0);
     CrowdBakedPoint p = tsCrowdBakedPoint(tsCrowdBakedMesh(entry), uint(gl_VertexIndex));
@@ -33,5 +39,5 @@ void main() {
     outUv = p.uv;
     outCrowdLod = tsCrowdFragmentLod();
     outCrowdShade = tsCrowdFragmentShade();
-    gl_Position = frame.viewProjection * p.world;
+    gl_Position = tsClipPosition(p.world);
 }

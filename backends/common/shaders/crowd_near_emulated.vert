@@ -13,6 +13,7 @@
 #define TS_CROWD 1
 #define TS_CROWD_TEXELS 1
 #include "common_frame.glsl"
+#include "shadow_caster.glsl"
 #include "character_eval.glsl"
 
 layout(location = 0) in uint inCode; // the pattern point's code
@@ -42,6 +43,11 @@ void main() {
     s.flags = bits.y;
     s.coverage = uintBitsToFloat(bits.z);
     s.level = uintBitsToFloat(bits.w);
+    // A caster outside the cascade's reach: none of its vertices' work.
+    if (tsShadowCasterCulled(tsCrowdInstance(s.instance).sphere)) {
+        gl_Position = tsCulledPosition();
+        return;
+    }
     CrowdListEntry entry = tsCrowdNearEntry(s, slot);
     tsCrowdSelectAtLevel(entry, s.level);
     CrowdCharacter c = uCrowd.characters[min(tsCrowdInstance(s.instance).ids.y, TS_CROWD_MAX_CHARACTERS - 1u)];
@@ -57,5 +63,5 @@ void main() {
     outUv = p.uv;
     outCrowdLod = tsCrowdFragmentLod();
     outCrowdShade = tsCrowdFragmentShade();
-    gl_Position = frame.viewProjection * vec4(p.world, 1.0);
+    gl_Position = tsClipPosition(vec4(p.world, 1.0));
 }

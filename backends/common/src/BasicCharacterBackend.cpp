@@ -4,6 +4,7 @@
 #include "common/CrowdTierCounts.h"
 #include "tessera/shaders/CrowdLod.h"
 #include "tessera/shaders/FrameUniforms.h"
+#include "tessera/shaders/ShadowCascades.h"
 #include "tessera/character/CharacterAsset.h"
 #include "tessera/gpu/FrameContext.h"
 #include "tessera/tessellator/Tessellator.h"
@@ -13,6 +14,20 @@
 #include <cstring>
 
 namespace tessera::backends {
+namespace {
+
+// The world sphere around a character placed by `world`: its asset's box
+// (the compressed cage's, bind pose) with a quarter more radius for the
+// limbs an animation swings out of it.
+glm::vec4 boundingSphere(const GpuCharacter& character, const glm::mat4& world) {
+    const glm::vec3 centre = 0.5f * (character.boxMin() + character.boxMax());
+    const float scale = std::max({glm::length(glm::vec3(world[0])), glm::length(glm::vec3(world[1])),
+                                  glm::length(glm::vec3(world[2]))});
+    const float radius = 1.25f * 0.5f * glm::length(character.boxMax() - character.boxMin()) * scale;
+    return glm::vec4(glm::vec3(world * glm::vec4(centre, 1.0f)), radius);
+}
+
+} // namespace
 
 gpu::PipelineLayout characterLayout(gpu::Device& device, CharacterBindings bindings, VkShaderStageFlags stages,
                                     VkDescriptorType cageType, uint32_t pushConstantBytes,
@@ -25,9 +40,13 @@ gpu::PipelineLayout characterLayout(gpu::Device& device, CharacterBindings bindi
         layout.push_back({TS_BINDING_CAGE_VERTICES, cageType, stages});
         layout.push_back({TS_BINDING_COMPRESSED, cageType, stages});
     }
-    if (bindings == CharacterBindings::Draw)
+    if (bindings == CharacterBindings::Draw) {
         for (uint32_t binding : {TS_BINDING_BASE_COLOR, TS_BINDING_NORMAL_MAP, TS_BINDING_DISPLACEMENT})
             layout.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages});
+        // The cascaded shadow maps the characters receive (CascadedShadowMaps).
+        layout.push_back({TS_BINDING_SHADOW_CASCADES, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, stages});
+        layout.push_back({TS_BINDING_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages});
+    }
     layout.insert(layout.end(), extra.begin(), extra.end());
     return gpu::PipelineLayout(device, layout, pushConstantBytes, pushConstantStages, std::move(name));
 }
@@ -70,6 +89,7 @@ void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& dra
                             draw.lodColors ? 1.0f : 0.0f);
         instance.uniforms =
             mFrame->pushUniform(character->uniforms(item.world, instance.level, draw.displacement && near, lod));
+        instance.sphere = boundingSphere(*character, item.world);
         // Only the used joints are bound: the shaders index the palette by the
         // cage's joints, all below paletteSize (GpuCharacter checks them), and
         // a 16 KiB block per instance would fill the frame's uniform ring.
@@ -91,6 +111,21 @@ void BasicCharacterBackend::drawCharacters(const backend::CharacterDrawInfo& dra
         suspendMainPass();
         gpu::PassScope pass(*mFrame, "character.skin");
         for (const CharacterInstance& instance : instances) skinCharacter(instance);
+        ++mReport.passes;
+    }
+    // The casters' depths before any receiver reads them (the characters
+    // below, the crowds and the terrain after).
+    if (mCascadedShadows) {
+        suspendMainPass();
+        mShadowMaps.record(*mFrame, "shadows.characters", [&](uint32_t, const shader::ShadowCasterPush& caster) {
+            for (const CharacterInstance& instance : instances) {
+                // The cull per cascade, on the CPU: the crowds' casters run
+                // the same test in their shaders.
+                const float viewDepth = -(mFrameInfo.view * glm::vec4(glm::vec3(instance.sphere), 1.0f)).z;
+                if (!shader::tsShadowCasterOutside(instance.sphere, viewDepth, caster.viewProjection, caster.cull))
+                    drawCharacterShadow(instance, draw.path, caster);
+            }
+        });
         ++mReport.passes;
     }
     ensureMainPass();
@@ -145,6 +180,12 @@ void BasicCharacterBackend::drawCrowd(backend::CrowdHandle handle, const backend
     suspendMainPass();
     recordCrowdPasses(*crowd, frame);
     recordCrowdCountsCopy(mFrame->cmd(), *crowd, frame.slot);
+    if (mCascadedShadows) {
+        mShadowMaps.record(*mFrame, "shadows.crowd", [&](uint32_t, const shader::ShadowCasterPush& caster) {
+            recordCrowdShadow(*crowd, frame, caster);
+        });
+        ++mReport.passes;
+    }
     ensureMainPass();
     recordCrowdDraws(*crowd, frame);
     const uint64_t bytes = crowd->bytes() + crowd->extensionBytes();
@@ -181,10 +222,12 @@ void BasicCharacterBackend::pushCharacterDescriptors(VkPipelineBindPoint bindPoi
         {c.sampler().handle(), c.displacementMap().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
     const uint32_t imageBindings[3] = {TS_BINDING_BASE_COLOR, TS_BINDING_NORMAL_MAP, TS_BINDING_DISPLACEMENT};
     std::vector<VkWriteDescriptorSet> writes;
-    writes.reserve(6 + extra.size());
+    writes.reserve(8 + extra.size());
     for (int i = 0; i < 3; ++i) writes.push_back(bufferWrite(bufferBindings[i], VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &buffers[i]));
-    if (bindings == CharacterBindings::Draw)
+    if (bindings == CharacterBindings::Draw) {
         for (int i = 0; i < 3; ++i) writes.push_back(imageWrite(imageBindings[i], &images[i]));
+        writes.insert(writes.end(), mShadowMaps.writes().begin(), mShadowMaps.writes().end());
+    }
     writes.insert(writes.end(), extra.begin(), extra.end());
     mDevice->fn().cmdPushDescriptorSet(mFrame->cmd(), bindPoint, layout.handle(), 0,
                                        static_cast<uint32_t>(writes.size()), writes.data());

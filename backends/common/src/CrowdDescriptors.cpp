@@ -3,6 +3,7 @@
 #include "tessera/shaders/CharacterUniforms.h"
 #include "common/CommandHelpers.h"
 #include "tessera/shaders/FrameUniforms.h"
+#include "tessera/shaders/ShadowCascades.h"
 
 namespace tessera::backends {
 namespace {
@@ -46,12 +47,14 @@ gpu::PipelineLayout CrowdDescriptors::layout(gpu::Device& device, Mode mode, VkS
     for (uint32_t binding : texelsOf(mode)) bindings.push_back({binding, kTexel, stages});
     for (uint32_t binding : kImageBindings)
         bindings.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages});
+    bindings.push_back({TS_BINDING_SHADOW_CASCADES, kUniform, stages});
+    bindings.push_back({TS_BINDING_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, stages});
     bindings.insert(bindings.end(), extra.begin(), extra.end());
     return gpu::PipelineLayout(device, bindings, pushConstantBytes, pushConstantStages, std::move(name));
 }
 
 CrowdDescriptors::CrowdDescriptors(Mode mode, GpuCrowd& crowd, uint32_t slot, const gpu::UniformSlice& frame,
-                                   const gpu::UniformSlice& uniforms)
+                                   const gpu::UniformSlice& uniforms, std::span<const VkWriteDescriptorSet> shadows)
     : mCrowd(crowd) {
     auto whole = [](gpu::Buffer& b) { return VkDescriptorBufferInfo{b.handle(), 0, VK_WHOLE_SIZE}; };
     if (mode == Mode::Storage) {
@@ -75,6 +78,7 @@ CrowdDescriptors::CrowdDescriptors(Mode mode, GpuCrowd& crowd, uint32_t slot, co
     for (size_t i = 0; i < texels.size(); ++i) mWrites.push_back(texelWrite(texels[i], &mTexels[i]));
     mFirstImage = mWrites.size();
     for (size_t i = 0; i < kImages; ++i) mWrites.push_back(imageWrite(kImageBindings[i], &mImages[i]));
+    mWrites.insert(mWrites.end(), shadows.begin(), shadows.end());
 }
 
 std::span<const VkWriteDescriptorSet> CrowdDescriptors::writes(uint32_t creature) {

@@ -12,20 +12,35 @@ namespace tessera::backends {
 // clockwise.)
 CrowdMeshPass::CrowdMeshPass(gpu::Device& device, CrowdDescriptors::Mode mode, std::span<const uint32_t> vertex,
                              std::span<const uint32_t> fragment, VkFormat colorFormat, VkFormat depthFormat,
-                             const std::string& name)
+                             const std::string& name, std::span<const uint32_t> casterVertex)
     : mPipeline(device, mode, vertex, fragment,
                 {sizeof(shader::CrowdListEntry), VK_VERTEX_INPUT_RATE_INSTANCE, VK_FORMAT_R32G32B32A32_UINT},
-                VK_FRONT_FACE_COUNTER_CLOCKWISE, colorFormat, depthFormat, name) {}
+                VK_FRONT_FACE_COUNTER_CLOCKWISE, colorFormat, depthFormat, name, casterVertex) {}
+
+namespace {
+
+// The indirect draw of list (tier, creature).
+void drawList(VkCommandBuffer cmd, GpuCrowd& crowd, uint32_t tier, uint32_t creature) {
+    const VkDeviceSize offset =
+        VkDeviceSize(tier * TS_CROWD_MAX_CHARACTERS + creature) * TS_CROWD_ARG_DRAW_WORDS * sizeof(uint32_t);
+    vkCmdDrawIndexedIndirect(cmd, crowd.args().handle(), offset, 1, 0);
+}
+
+} // namespace
 
 void CrowdMeshPass::record(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors) {
     static const char* const kPassNames[2] = {"crowd.middle", "crowd.far"};
     for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier)
         mPipeline.record(frame, kPassNames[tier - TS_LOD_MIDDLE], crowd, descriptors, crowd.lists().handle(),
-                         crowd.indices().handle(), [&](VkCommandBuffer cmd, uint32_t c) {
-                             const VkDeviceSize offset = VkDeviceSize(tier * TS_CROWD_MAX_CHARACTERS + c) *
-                                                         TS_CROWD_ARG_DRAW_WORDS * sizeof(uint32_t);
-                             vkCmdDrawIndexedIndirect(cmd, crowd.args().handle(), offset, 1, 0);
-                         });
+                         crowd.indices().handle(),
+                         [&](VkCommandBuffer cmd, uint32_t c) { drawList(cmd, crowd, tier, c); });
+}
+
+void CrowdMeshPass::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
+                                 const shader::ShadowCasterPush& caster) {
+    for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier)
+        mPipeline.recordShadow(frame, crowd, descriptors, crowd.lists().handle(), crowd.indices().handle(),
+                               caster, [&](VkCommandBuffer cmd, uint32_t c) { drawList(cmd, crowd, tier, c); });
 }
 
 } // namespace tessera::backends

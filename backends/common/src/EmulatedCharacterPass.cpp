@@ -7,7 +7,9 @@
 
 #include "character.frag.spv.h"
 #include "character_emulated.vert.spv.h"
+#include "character_emulated.vert_shadow.spv.h"
 #include "character_emulated.vert_single.spv.h"
+#include "character_emulated.vert_single_shadow.spv.h"
 
 #include <bit>
 #include <cstring>
@@ -47,8 +49,16 @@ EmulatedCharacterPass::EmulatedCharacterPass(gpu::Device& device, const std::str
         desc.frontFace = VK_FRONT_FACE_CLOCKWISE;
         desc.colorFormats = {colorFormat};
         desc.depthFormat = depthFormat;
-        mPipelines[single] = FillWirePipelines(
-            device, desc, backendName + ".character." + (single ? "singlePass" : "twoPass"), wireframe);
+        desc.name = backendName + ".character." + (single ? "singlePass" : "twoPass");
+        mPipelines[single] = FillWirePipelines(device, desc, desc.name, wireframe);
+        const VkShaderStageFlags vertexStage = VK_SHADER_STAGE_VERTEX_BIT;
+        mShadow[single] = ShadowCasterPipeline(
+            device, desc,
+            characterLayout(device, CharacterBindings::Draw, vertexStage, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER,
+                            ShadowCasterPipeline::kPushBytes, vertexStage, desc.name + ".shadow.layout"),
+            vertexStage,
+            {{VK_SHADER_STAGE_VERTEX_BIT, single ? std::span<const uint32_t>(character_emulated_vert_single_shadow_spv)
+                                                 : std::span<const uint32_t>(character_emulated_vert_shadow_spv)}});
     }
 }
 
@@ -102,17 +112,30 @@ EmulatedCharacterPass::Placed EmulatedCharacterPass::place(uint32_t slot, float 
 
 void EmulatedCharacterPass::record(gpu::FrameContext& frame, const CharacterInstance& instance,
                                    backend::CharacterPath path, bool wireframe, const CharacterPushFn& push) {
+    const int single = path == backend::CharacterPath::SinglePass ? 1 : 0;
+    vkCmdBindPipeline(frame.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines[single].get(wireframe).handle());
+    drawPattern(frame, mLayout, instance, push);
+}
+
+void EmulatedCharacterPass::recordShadow(gpu::FrameContext& frame, const CharacterInstance& instance,
+                                         backend::CharacterPath path, const shader::ShadowCasterPush& caster,
+                                         const CharacterPushFn& push) {
+    const ShadowCasterPipeline& shadow = mShadow[path == backend::CharacterPath::SinglePass ? 1 : 0];
+    shadow.bind(frame.cmd(), caster);
+    drawPattern(frame, shadow.layout(), instance, push);
+}
+
+void EmulatedCharacterPass::drawPattern(gpu::FrameContext& frame, const gpu::PipelineLayout& layout,
+                                        const CharacterInstance& instance, const CharacterPushFn& push) {
     VkCommandBuffer cmd = frame.cmd();
     GpuCharacter& c = *instance.character;
-    const int single = path == backend::CharacterPath::SinglePass ? 1 : 0;
+    // The caster and the main draw place the same level: one pattern.
     const Placed pattern = place(frame.slot(), instance.level);
-    const gpu::Pipeline& pipeline = mPipelines[single].get(wireframe);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.handle());
     const VkBufferView cage = c.vertexTexels();
     const VkBufferView compressed = instance.compressed ? instance.compressed->view.handle() : cage;
     const VkWriteDescriptorSet writes[2] = {texelWrite(TS_BINDING_CAGE_VERTICES, &cage),
                                             texelWrite(TS_BINDING_COMPRESSED, &compressed)};
-    push(VK_PIPELINE_BIND_POINT_GRAPHICS, CharacterBindings::Draw, mLayout, instance, writes);
+    push(VK_PIPELINE_BIND_POINT_GRAPHICS, CharacterBindings::Draw, layout, instance, writes);
     const gpu::Buffer& stream = mSlots[frame.slot()].stream;
     const VkBuffer buffers[2] = {stream.handle(), c.indices().handle()};
     const VkDeviceSize offsets[2] = {pattern.vertexOffset, 0};

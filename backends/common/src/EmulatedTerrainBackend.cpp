@@ -11,6 +11,7 @@
 
 #include "character.frag_crowd_texels.spv.h"
 #include "crowd_mesh.vert_texels.spv.h"
+#include "crowd_mesh.vert_texels_shadow.spv.h"
 #include "terrain_basic.frag.spv.h"
 #include "terrain_emulated.vert.spv.h"
 
@@ -58,7 +59,8 @@ Status EmulatedTerrainBackend::initializeTechnique(const backend::BackendInitInf
         mSubdivPass = EmulatedSubdivPass(*mDevice, name, color, depth, mWireframeSupported);
     if (capabilities(nullptr).crowd) {
         mCrowdMesh = CrowdMeshPass(*mDevice, CrowdDescriptors::Mode::Texels, crowd_mesh_vert_texels_spv,
-                                   character_frag_crowd_texels_spv, color, depth, name + ".crowd.mesh");
+                                   character_frag_crowd_texels_spv, color, depth, name + ".crowd.mesh",
+                                   crowd_mesh_vert_texels_shadow_spv);
         mCrowdNear = EmulatedCrowdNearPass(*mDevice, color, depth, name);
     }
     return {};
@@ -114,13 +116,27 @@ void EmulatedTerrainBackend::beginTechniqueFrame() {
 }
 
 void EmulatedTerrainBackend::recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame& frame) {
-    CrowdDescriptors descriptors(CrowdDescriptors::Mode::Texels, crowd, frame.slot, mFrameUniforms, frame.uniforms);
+    CrowdDescriptors descriptors(CrowdDescriptors::Mode::Texels, crowd, frame.slot, mFrameUniforms, frame.uniforms,
+                                 mShadowMaps.writes());
     mCrowdNear.record(*mFrame, crowd, descriptors);
     mCrowdMesh.record(*mFrame, crowd, descriptors);
 }
 
+void EmulatedTerrainBackend::recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame,
+                                               const shader::ShadowCasterPush& caster) {
+    CrowdDescriptors descriptors(CrowdDescriptors::Mode::Texels, crowd, frame.slot, mFrameUniforms, frame.uniforms,
+                                 mShadowMaps.writes());
+    mCrowdNear.recordShadow(*mFrame, crowd, descriptors, caster);
+    mCrowdMesh.recordShadow(*mFrame, crowd, descriptors, caster);
+}
+
 void EmulatedTerrainBackend::drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) {
     mCharacterPass.record(*mFrame, instance, path, mFrameInfo.wireframe, characterPush());
+}
+
+void EmulatedTerrainBackend::drawCharacterShadow(const CharacterInstance& instance, backend::CharacterPath path,
+                                                 const shader::ShadowCasterPush& caster) {
+    mCharacterPass.recordShadow(*mFrame, instance, path, caster, characterPush());
 }
 
 uint64_t EmulatedTerrainBackend::characterPassBytes() const {
@@ -136,7 +152,7 @@ void EmulatedTerrainBackend::drawTessellated(GpuTerrain& terrain, const backend:
     const gpu::UniformSlice tessUniforms = pushTessUniforms(terrain, draw.tessellation, TS_EMU_MAX_LEVEL);
     EmulatedDrawSource source;
     if (!draw.visiblePatches.empty()) source = recordFactorPasses(terrain, draw, tessUniforms);
-    mReport.intermediateBytes = patternBytes() + factorPassBytes();
+    mReport.intermediateBytes += patternBytes() + factorPassBytes();
 
     ensureMainPass();
     gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");

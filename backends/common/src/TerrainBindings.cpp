@@ -1,6 +1,7 @@
 #include "common/TerrainBindings.h"
 
 #include "tessera/shaders/FrameUniforms.h"
+#include "tessera/shaders/ShadowCascades.h"
 #include "tessera/shaders/TerrainUniforms.h"
 
 namespace tessera::backends {
@@ -14,7 +15,9 @@ std::vector<gpu::BindingDesc> terrainBindings(VkShaderStageFlags stages,
                                               {TS_BINDING_HEIGHTMAP, kSampled, stages},
                                               {TS_BINDING_SUN_VISIBILITY, kSampled, stages},
                                               {TS_BINDING_DETAIL, kSampled, stages},
-                                              {TS_BINDING_CHARACTER_SHADOW, kSampled, stages}};
+                                              {TS_BINDING_CHARACTER_SHADOW, kSampled, stages},
+                                              {TS_BINDING_SHADOW_CASCADES, kUniform, stages},
+                                              {TS_BINDING_SHADOW_MAP, kSampled, stages}};
     bindings.insert(bindings.end(), extra.begin(), extra.end());
     return bindings;
 }

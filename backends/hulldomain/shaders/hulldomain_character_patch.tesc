@@ -4,6 +4,7 @@
 // whole draw (the paper's per-draw level), up to 64.
 #extension GL_GOOGLE_include_directive : require
 #include "character_common.glsl"
+#include "shadow_caster.glsl"
 
 layout(vertices = 3) out;
 
@@ -52,6 +53,11 @@ void main() {
 #endif
     if (gl_InvocationID == 0) {
         float level = uCharacter.displacement.z;
+#ifdef TS_CROWD
+        // A caster outside the cascade's reach: a level of 0 drops the patch
+        // before the tessellator (the crowd's caster variant only).
+        if (tsShadowCasterCulled(tsCrowdInstance(tsCrowdEntry(inEntry[0]).instance).sphere)) level = 0.0;
+#endif
         gl_TessLevelOuter[0] = level;
         gl_TessLevelOuter[1] = level;
         gl_TessLevelOuter[2] = level;

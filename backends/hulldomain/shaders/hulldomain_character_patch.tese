@@ -4,6 +4,7 @@
 // the same function on the same points in character_emulated.vert.
 #extension GL_GOOGLE_include_directive : require
 #include "common_frame.glsl"
+#include "shadow_caster.glsl"
 #include "character_eval.glsl"
 
 layout(triangles, fractional_odd_spacing, ccw) in;
@@ -66,5 +67,5 @@ void main() {
     outNormal = p.normal;
     outTangent = p.tangent;
     outUv = p.uv;
-    gl_Position = frame.viewProjection * vec4(p.world, 1.0);
+    gl_Position = tsClipPosition(vec4(p.world, 1.0));
 }

@@ -18,12 +18,19 @@ struct CrowdMeshletPayload {
 };
 
 #ifdef MS_CROWD_CULL
+#include "tessera/shaders/ShadowCascades.h"
 layout(push_constant) uniform CrowdMeshletDraw {
     uint countWord;    // the list's instance count in crowdArgs
     uint listBase;     // the list's first entry in crowdLists
     uint firstMeshlet; // the mesh's first meshlet
     uint meshletCount;
+#ifdef TS_SHADOW_CASTER
+    ShadowCasterPush caster; // at TS_SHADOW_CASTER_OFFSET (16), as the mesh stage reads it
+#endif
 } draw;
+// A stage has one push-constant block: the caster's push is this one's.
+#define TS_SHADOW_CASTER_PUSH draw.caster
+#include "shadow_caster.glsl"
 layout(std430, set = 0, binding = TS_BINDING_CROWD_ARGS) readonly buffer ArgsBlock {
     uint crowdArgs[];
 };
@@ -37,9 +44,16 @@ bool msCrowdMeshletItem(uint item, out uvec2 drawn) {
     uint m = item - k * draw.meshletCount;
     drawn = uvec2(draw.listBase + k, draw.firstMeshlet + m);
     if (k >= crowdArgs[draw.countWord]) return false;
+#ifdef TS_SHADOW_CASTER
+    // A caster may shadow the view from outside it or facing away from the
+    // camera: no frustum or normal-cone test against the camera, only the
+    // cull per cascade, which launches none of its meshlets.
+    return !tsShadowCasterCulled(tsCrowdInstance(crowdLists[drawn.x].instance).sphere);
+#else
     CrowdInstance instance = tsCrowdInstance(crowdLists[drawn.x].instance);
     return tsCrowdMeshletVisible(crowdMeshlets[drawn.y], tsCrowdWorld(instance), max(instance.animation.y, 1e-6),
                                  uCrowd.lod);
+#endif
 }
 
 // The item this invocation tests: the workgroups run in rows of

@@ -53,21 +53,24 @@ ShadowMapArray::ShadowMapArray(Device& device, uint32_t size, uint32_t layers, c
         "shadowMapArray.clear");
 }
 
-void ShadowMapArray::beginWriting(VkCommandBuffer cmd, VkPipelineStageFlags2 readStages) const {
-    // From UNDEFINED: every layer is cleared by its pass, so the old texels
-    // need not survive the transition.
+void ShadowMapArray::beginWriting(VkCommandBuffer cmd, VkPipelineStageFlags2 readStages, Contents contents) const {
+    // Clearing: from UNDEFINED, as every layer is cleared by its pass and
+    // the old texels need not survive the transition. Keeping: from the
+    // sampled layout, which preserves them.
+    const VkImageLayout from =
+        contents == Contents::Clear ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     const VkImageMemoryBarrier2 barrier[1] = {imageBarrier(
-        mImage, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, readStages, 0,
+        mImage, from, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, readStages, 0,
         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
         VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT)};
     pipelineBarrier(cmd, barrier);
 }
 
-void ShadowMapArray::beginLayer(VkCommandBuffer cmd, uint32_t layer) const {
+void ShadowMapArray::beginLayer(VkCommandBuffer cmd, uint32_t layer, Contents contents) const {
     VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     depth.imageView = mLayerViews.at(1 + layer).get();
     depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth.loadOp = contents == Contents::Clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
     depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     depth.clearValue.depthStencil = {1.0f, 0};
     VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};

@@ -79,10 +79,12 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
         if (s.terrainVisible) s.terrain->cull(camera.frustum(), camera.position(), s.visible);
     }
     const std::vector<terrain::CraterSplat> splats = s.terrain->takePendingSplats();
-    // The cascades follow the view; fitted only where a backend may draw them.
+    // The cascades follow the view; fitted only where a backend may draw
+    // them, with the device's settings (the backend's layers have them too).
     s.shadowCascades.clear();
     if (s.look == backend::Look::Full && s.shadows != backend::Shadows::Blob && capabilities().cascadedShadows)
-        s.shadowCascades = scene::ShadowCascadeFit().fit(camera, s.sunDirection);
+        s.shadowCascades =
+            scene::ShadowCascadeFit(scene::ShadowCascadeFit::Settings::forDevice(deviceClass())).fit(camera, s.sunDirection);
     backend::FrameInfo info = s.frameInfo(frameIndex, camera, clearColor, wireframe);
     const bool capture = s.renderDoc && s.captureFrame == frameIndex;
     if (capture) s.renderDoc->begin(*s.selected->instance);

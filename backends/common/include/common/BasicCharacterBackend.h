@@ -23,6 +23,7 @@
 #include "common/GpuCharacter.h"
 #include "common/GpuCrowd.h"
 #include "common/GpuObjectTable.h"
+#include "tessera/shaders/ShadowCascades.h"
 
 #include <functional>
 #include <initializer_list>
@@ -39,6 +40,7 @@ struct CharacterInstance {
     gpu::UniformSlice palette;   ///< shader::CharacterPalette
     CompressedCage* compressed = nullptr;  ///< pass 1's output (two-pass only)
     float level = 1.0f;          ///< clamped to the backend's maximum
+    glm::vec4 sphere{0.0f};      ///< world bounding sphere (xyz centre, w radius), for the cull per cascade
 };
 
 /// Which of the shared bindings a character pipeline declares: pass 1 reads
@@ -96,6 +98,12 @@ protected:
     virtual void skinCharacter(const CharacterInstance& instance) = 0;
     /// Pass 2, inside the main pass.
     virtual void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) = 0;
+    /// Cascaded shadows (a backend that sets BackendCapabilities::
+    /// cascadedShadows): pass 2 again as a caster, depth only, into the open
+    /// layer of the cascade `caster` (matrix and cull per cascade)
+    /// (ShadowCasterPipeline), after pass 1 and outside the main pass.
+    virtual void drawCharacterShadow(const CharacterInstance& /*instance*/, backend::CharacterPath /*path*/,
+                                     const shader::ShadowCasterPush& /*caster*/) {}
     /// Bytes of the technique's own character intermediates (render targets,
     /// pattern streams) beyond the compressed cages, for FrameReport.
     virtual uint64_t characterPassBytes() const { return 0; }
@@ -120,6 +128,12 @@ protected:
     virtual void recordCrowdPasses(GpuCrowd& /*crowd*/, const CrowdFrame& /*frame*/) {}
     /// Inside the main pass: each tier's draws.
     virtual void recordCrowdDraws(GpuCrowd& /*crowd*/, const CrowdFrame& /*frame*/) {}
+    /// Cascaded shadows: each tier's draws again as casters, depth only, over
+    /// the lists recordCrowdPasses made, into the open layer of the cascade
+    /// `caster` (its matrix, and its cull per cascade, which the shaders run
+    /// per instance); outside the main pass.
+    virtual void recordCrowdShadow(GpuCrowd& /*crowd*/, const CrowdFrame& /*frame*/,
+                                   const shader::ShadowCasterPush& /*caster*/) {}
     /// GPU passes one drawCrowd records (passes and draws), for FrameReport::passes.
     virtual uint32_t crowdPassCount() const { return 0; }
 

@@ -20,6 +20,12 @@
 /// shaded after the main pass by the terrain resolve (TerrainResolvePass),
 /// which also draws the sky; with no terrain the sky pass draws it.
 ///
+/// With cascaded shadows (CascadedShadowMaps) the terrain receives the
+/// characters' shadows, whose depth passes the character and crowd commands
+/// record after it: drawTerrain then updates the terrain's own maps at once
+/// but keeps its main-pass draw (the visible patches copied) and records it
+/// in endFrame, after every caster and before the sky.
+///
 /// Submitting and waiting: between beginFrame and endFrame a backend only
 /// records into the host's FrameContext; it never submits, presents or
 /// waits. Outside a frame it blocks only through the GPU layer, each in one
@@ -28,6 +34,7 @@
 /// readCrowdTiers, readSubdivPoints) through gpu::readBack, and shutdown
 /// through Device::waitIdle.
 
+#include "common/CascadedShadowMaps.h"
 #include "common/CharacterShadowPass.h"
 #include "common/FillWirePipelines.h"
 #include "common/GpuObjectTable.h"
@@ -123,8 +130,21 @@ protected:
     /// This frame draws cascaded shadow maps rather than blob shadows
     /// (FrameInfo::shadows, where capabilities().cascadedShadows).
     bool mCascadedShadows = false;
+    /// The cascaded shadow maps: written by the casters' depth-only passes
+    /// (BasicCharacterBackend), read through every receiver layout.
+    CascadedShadowMaps mShadowMaps;
 
 private:
+    /// A terrain draw kept for endFrame (cascaded shadows), its patches owned.
+    struct PendingTerrainDraw {
+        GpuTerrain* terrain = nullptr;
+        std::vector<uint32_t> patches;
+        terrain::TessellationSettings tessellation;
+    };
+    /// drawTerrain's main-pass part: picks the terrain the resolve shades,
+    /// then draws its patches (control mesh or the technique's).
+    void recordTerrainDraw(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw);
+
     /// Adds to `caps.missing` what `device` lacks of what `caps` uses.
     static void checkRequirements(const device::DeviceFeatures* device, backend::BackendCapabilities& caps);
 
@@ -139,6 +159,8 @@ private:
     /// The full look's terrain this frame, shaded by mResolvePass after the
     /// main pass; a second terrain in the same frame is shaded forward.
     GpuTerrain* mResolveTerrain = nullptr;
+    /// This frame's terrain draws waiting for the casters (cascaded shadows).
+    std::vector<PendingTerrainDraw> mPendingTerrains;
     /// This frame's terrain is shaded deferred (FrameInfo::terrainShading).
     bool mDeferTerrain = false;
     /// TerrainShading::Auto defers: with the compute resolve on a GPU.

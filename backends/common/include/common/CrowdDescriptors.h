@@ -7,6 +7,7 @@
 /// compute passes and draws) and `Texels` (the emulated backends' draws:
 /// instances, clips, near cages, near slot records and indices as texel
 /// buffers, as D3D9 vertex texture fetch and D3D10 Buffer.Load read them).
+/// Both end with the cascaded shadow maps' two bindings (ShadowCascades.h).
 
 #include "common/GpuCrowd.h"
 #include "tessera/gpu/FrameContext.h"
@@ -31,9 +32,11 @@ public:
                                       std::initializer_list<gpu::BindingDesc> extra = {},
                                       uint32_t pushConstantBytes = 0, VkShaderStageFlags pushConstantStages = 0);
 
-    /// Writes for `crowd` in frame slot `slot` with this frame's uniforms.
+    /// Writes for `crowd` in frame slot `slot` with this frame's uniforms
+    /// and the cascaded shadow maps' bindings (CascadedShadowMaps::writes,
+    /// which must outlive this object).
     CrowdDescriptors(Mode mode, GpuCrowd& crowd, uint32_t slot, const gpu::UniformSlice& frame,
-                     const gpu::UniformSlice& uniforms);
+                     const gpu::UniformSlice& uniforms, std::span<const VkWriteDescriptorSet> shadows);
     CrowdDescriptors(const CrowdDescriptors&) = delete;
     CrowdDescriptors& operator=(const CrowdDescriptors&) = delete;
 

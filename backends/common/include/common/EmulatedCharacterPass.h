@@ -12,6 +12,7 @@
 
 #include "common/FillWirePipelines.h"
 #include "common/BasicCharacterBackend.h"
+#include "common/ShadowCasterPipeline.h"
 #include "tessera/gpu/Buffer.h"
 #include "tessera/gpu/Pipeline.h"
 #include "tessera/gpu/PipelineLayout.h"
@@ -33,6 +34,11 @@ public:
     /// Draws one instance inside the main pass. Call beginFrame first each frame.
     void record(gpu::FrameContext& frame, const CharacterInstance& instance, backend::CharacterPath path,
                 bool wireframe, const CharacterPushFn& push);
+    /// Draws one instance as a caster (the evaluation vertex shader's
+    /// TS_SHADOW_CASTER variant, depth only) into the open shadow layer of
+    /// the cascade `caster`, outside the main pass.
+    void recordShadow(gpu::FrameContext& frame, const CharacterInstance& instance, backend::CharacterPath path,
+                      const shader::ShadowCasterPush& caster, const CharacterPushFn& push);
     /// Starts this frame's pattern stream (the slot's previous contents have retired).
     void beginFrame(uint32_t slot);
     /// Bytes of the pattern streams, for the backend comparison.
@@ -49,8 +55,14 @@ private:
 
     gpu::Device* mDevice = nullptr;
     std::string mName;
+    /// Binds the instance's descriptors through `layout` and the pattern
+    /// of its level, and draws it over every cage triangle.
+    void drawPattern(gpu::FrameContext& frame, const gpu::PipelineLayout& layout, const CharacterInstance& instance,
+                     const CharacterPushFn& push);
+
     gpu::PipelineLayout mLayout;
     FillWirePipelines mPipelines[2]; ///< [single-pass]
+    ShadowCasterPipeline mShadow[2]; ///< [single-pass]
     struct Slot {
         gpu::Buffer stream;  ///< patterns of this frame: points (vec2) then indices (uint32)
         VkDeviceSize used = 0;

@@ -25,6 +25,10 @@ public:
 
     /// Inside the main pass: GPU pass crowd.near.
     void record(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors);
+    /// The same draws as casters into the open shadow layer of the cascade
+    /// `caster` (CascadedShadowMaps::record).
+    void recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
+                      const shader::ShadowCasterPush& caster);
 
 private:
     CrowdPipeline mPipeline;

@@ -36,6 +36,10 @@ protected:
     /// Characters: the emulated tessellator's pattern per level, instanced per
     /// cage triangle (EmulatedCharacterPass); pass 1 is each backend's own.
     void drawCharacter(const CharacterInstance& instance, backend::CharacterPath path) final;
+    /// Cascaded shadows: pass 2 again through the evaluation vertex shader's
+    /// caster variant (EmulatedCharacterPass::recordShadow).
+    void drawCharacterShadow(const CharacterInstance& instance, backend::CharacterPath path,
+                             const shader::ShadowCasterPush& caster) final;
     uint64_t characterPassBytes() const final;
 
     /// Creates the backend's own factor passes (and the rest of its technique).
@@ -84,6 +88,10 @@ protected:
     /// far tiers from the baked clips (CrowdMeshPass), reading the crowd as
     /// texel buffers (CrowdDescriptors::Mode::Texels).
     void recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame& frame) final;
+    /// Cascaded shadows: the same tiers' draws as casters, depth only, their
+    /// evaluation and mesh vertex shaders' TS_SHADOW_CASTER variants (no
+    /// compute, no stages beyond vertex: what r2vb's generation has).
+    void recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame, const shader::ShadowCasterPush& caster) final;
 
     /// Bytes of the pattern buffers (shared by every frame).
     uint64_t patternBytes() const;

@@ -2,7 +2,8 @@
 /// @file TerrainBindings.h
 /// The descriptor bindings every terrain pass shares (set 0, TerrainUniforms.h
 /// and FrameUniforms.h): the frame, the terrain's uniforms, its height map,
-/// sun-visibility map and detail array, and the characters' shadow mask.
+/// sun-visibility map and detail array, the characters' shadow mask, and the
+/// cascaded shadow maps' uniforms and layers (ShadowCascades.h).
 /// Each pass builds its layout from them plus its own bindings
 /// (terrainLayout); BasicTerrainBackend::pushTerrainDescriptors fills them,
 /// and pass objects reach it through a PushTerrainBindings.
@@ -22,7 +23,7 @@ namespace tessera::backends {
 using PushTerrainBindings = std::function<void(VkPipelineBindPoint bindPoint, const gpu::PipelineLayout& layout,
                                                std::span<const VkWriteDescriptorSet> extra)>;
 
-/// The six shared bindings, each visible to `stages`, the frame's first,
+/// The eight shared bindings, each visible to `stages`, the frame's first,
 /// followed by `extra`.
 std::vector<gpu::BindingDesc> terrainBindings(VkShaderStageFlags stages,
                                               std::initializer_list<gpu::BindingDesc> extra = {});

@@ -30,12 +30,34 @@ SliceSphere sliceSphere(float n, float f, float k) {
 
 } // namespace
 
+ShadowCascadeFit::Settings ShadowCascadeFit::Settings::forDevice(lod::DeviceClass device) {
+    Settings settings;
+    if (device == lod::DeviceClass::Cpu) {
+        // lavapipe (docs/LOOKS.md, "The cost and auto"): each receiver's tap
+        // is a 2x2 comparison filtered in software, over every terrain and
+        // creature pixel, and each cascade a depth pass whose culled casters
+        // still run their vertex stage's first lines. One tap (2x2 texels
+        // filtered, crisper than the GPU's 4x4, not noisier at these
+        // sizes), two cascades split half uniformly (the near one to about
+        // 40 m, texels under a decimetre; the far one's a third of a metre,
+        // blob-like, as blobs are there) and
+        // 150 m of shadow, twice the blob mask's reach: beyond it the
+        // creatures are a few pixels tall and their receivers sample nothing.
+        settings.cascadeCount = 2;
+        settings.splitLambda = 0.5f;
+        settings.shadowDistance = 150.0f;
+        settings.pcfTaps = 1;
+    }
+    return settings;
+}
+
 ShadowCascadeFit::ShadowCascadeFit(const Settings& settings) : mSettings(settings) {
     assert(settings.cascadeCount >= 1 && settings.cascadeCount <= kMaxCascades && "ShadowCascadeFit: cascade count");
     assert(settings.shadowDistance > 0.0f && "ShadowCascadeFit: shadow distance must be positive");
     assert(settings.splitLambda >= 0.0f && settings.splitLambda <= 1.0f && "ShadowCascadeFit: lambda outside 0..1");
     assert(settings.resolution >= 16 && "ShadowCascadeFit: resolution too small");
     assert(settings.casterReach >= 0.0f && "ShadowCascadeFit: negative caster reach");
+    assert(settings.pcfTaps >= 1 && settings.pcfTaps <= 3 && "ShadowCascadeFit: taps outside 1..3");
 }
 
 glm::mat4 ShadowCascadeFit::sunView(const glm::vec3& towardsSun) {

@@ -2,6 +2,7 @@
 /// @file ShadowCascadeFit.h
 /// Fits a cascaded shadow map's cascades to a camera and the sun, stably.
 
+#include "tessera/lod/LodPolicy.h"
 #include "tessera/scene/Camera.h"
 #include "tessera/scene/ShadowCascade.h"
 
@@ -41,6 +42,12 @@ public:
         float splitLambda = 0.8f;     ///< practicalCascadeSplits' blend: 1 logarithmic, 0 uniform
         uint32_t resolution = 1024;   ///< texels on a side of each cascade's map
         float casterReach = 150.0f;   ///< metres towards the sun beyond a slice where casters are still drawn
+        uint32_t pcfTaps = 3;         ///< receivers' bilinear comparison taps on a side (1 to 3; shadow_cascades.glsl)
+
+        /// The defaults for `device` (docs/LOOKS.md, "The cost and auto"): on
+        /// a CPU rasterizer two cascades over 150 m and one tap, which keep
+        /// the full look with cascaded shadows near the look with blobs.
+        static Settings forDevice(lod::DeviceClass device);
     };
 
     ShadowCascadeFit() = default;

@@ -9,6 +9,11 @@
 // The most cascades (scene::ShadowCascadeFit::kMaxCascades).
 #define TS_SHADOW_MAX_CASCADES 4u
 
+// The receivers' bindings (set 0) in every terrain, character and crowd
+// layout: the ShadowCascadeUniforms block and the sampler2DArrayShadow.
+#define TS_BINDING_SHADOW_CASCADES 48
+#define TS_BINDING_SHADOW_MAP 49
+
 TS_NAMESPACE_BEGIN
 
 struct ShadowCascadeUniforms {
@@ -18,8 +23,20 @@ struct ShadowCascadeUniforms {
     vec4 depthRanges;       // metres between each cascade's depth 0 and 1
     vec4 params;            // x: cascade count (0: no cascaded shadows), y: 1 / map size (texels),
                             // z: normal offset (texels), w: constant depth bias (m)
+    vec4 pcf;               // x: taps on a side of the receivers' percentage-closer filter (1 to 3), yzw: unused
 };
-TS_CHECK_SIZE(ShadowCascadeUniforms, 320)
+TS_CHECK_SIZE(ShadowCascadeUniforms, 336)
+
+// What a caster's depth-only draw pushes per cascade (shadow_caster.glsl):
+// the cascade's matrix and what its cull per cascade reads
+// (tsShadowCasterOutside).
+struct ShadowCasterPush {
+    mat4 viewProjection; // world to the cascade's clip space
+    vec4 cull;           // x, y: the view depths (m) the cascade's slice spans (x very negative for the first),
+                         // z: the cascade's clip units per metre sideways (1 / its radius),
+                         // w: metres a caster's shadow reaches from its centre per metre of its radius
+};
+TS_CHECK_SIZE(ShadowCasterPush, 80)
 
 // The cascade a receiver at `viewDepth` metres along the view axis reads:
 // the first whose far distance it is within, or `count` beyond the last
@@ -30,6 +47,22 @@ TS_INLINE uint tsShadowCascadeIndex(vec4 farDistances, uint count, float viewDep
         if (index == count && viewDepth <= farDistances[i]) index = i;
     }
     return index;
+}
+
+// Whether a caster whose bounding sphere is `sphere` (world centre, radius)
+// and whose centre lies `viewDepth` metres along the view axis can shadow
+// nothing that reads the cascade of `viewProjection` and `cull`
+// (ShadowCasterPush's): neither it nor its shadow (within cull.w radii of
+// its centre) reaches the cascade's slice of the view, or it lies beside
+// the cascade's square (the sun's projection is orthographic along the
+// rays, so its shadow does too). The casters' cull per cascade, in their
+// gl_Position or task stage, and on the CPU for drawCharacters' characters.
+TS_INLINE bool tsShadowCasterOutside(vec4 sphere, float viewDepth, mat4 viewProjection, vec4 cull) {
+    const float reach = sphere.w * cull.w;
+    if (viewDepth < cull.x - reach || viewDepth > cull.y + reach) return true;
+    const vec4 clip = viewProjection * vec4(sphere.x, sphere.y, sphere.z, 1.0f);
+    const float side = 1.0f + sphere.w * cull.z;
+    return abs(clip.x) > side || abs(clip.y) > side;
 }
 
 TS_NAMESPACE_END

@@ -23,13 +23,19 @@ class Device;
 ///
 /// A frame's use: beginWriting, then for each cascade beginLayer (cleared to
 /// depth 1), the casters' depth-only draws, endLayer; then endWriting, which
-/// hands every layer to the given shader stages. Between frames and from
+/// hands every layer to the given shader stages. Later casters in the same
+/// frame (a crowd after the characters) write again with Contents::Keep,
+/// adding their depths to the layers' instead of clearing them. Between frames and from
 /// creation (cleared to depth 1, so nothing is shadowed) the layers are in
 /// SHADER_READ_ONLY_OPTIMAL, so a frame that draws no casters still samples
 /// a valid, fully lit map.
 class ShadowMapArray {
 public:
     static constexpr VkFormat kFormat = VK_FORMAT_D32_SFLOAT;
+
+    /// What a write does with the layers' depths: the frame's first write
+    /// clears them, later ones keep and add to them.
+    enum class Contents { Clear, Keep };
 
     ShadowMapArray() = default;
     /// Makes the image, its views and sampler, and clears every layer
@@ -46,11 +52,13 @@ public:
     uint64_t bytes() const { return uint64_t(size()) * size() * layers() * 4u; }
 
     /// Transitions every layer for depth writes, after earlier reads by
-    /// `readStages` (the previous frame's sampling).
-    void beginWriting(VkCommandBuffer cmd, VkPipelineStageFlags2 readStages) const;
-    /// Begins depth-only dynamic rendering into `layer`, cleared to 1, with
-    /// the whole layer as viewport and scissor.
-    void beginLayer(VkCommandBuffer cmd, uint32_t layer) const;
+    /// `readStages` (the previous frame's sampling, or this frame's where
+    /// `contents` is Keep, whose depths the transition then preserves).
+    void beginWriting(VkCommandBuffer cmd, VkPipelineStageFlags2 readStages,
+                      Contents contents = Contents::Clear) const;
+    /// Begins depth-only dynamic rendering into `layer`, cleared to 1 or
+    /// loaded (`contents`), with the whole layer as viewport and scissor.
+    void beginLayer(VkCommandBuffer cmd, uint32_t layer, Contents contents = Contents::Clear) const;
     void endLayer(VkCommandBuffer cmd) const;
     /// Hands every layer to sampled reads by `readStages`.
     void endWriting(VkCommandBuffer cmd, VkPipelineStageFlags2 readStages) const;
