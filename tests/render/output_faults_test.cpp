@@ -89,7 +89,7 @@ TEST(OutputFaults, ADeviceTooSmallEndsTheRunCleanly) {
         if (!deviceRunsBackend(backend)) continue;
         expectFailure({"--backend", backend, "--scene", "terrain", "--width", "64", "--height", "64", "--frames", "2",
                        "--device-memory-cap", "16"},
-                      "out of device memory: terrain.heightMap needs 8.00 MiB");
+                      "of the 16.00 MiB cap in use");
     }
     // Enough for the terrain but not for a crowd: it fails later, in the crowd's upload.
     const std::string line = expectOneLineError(
