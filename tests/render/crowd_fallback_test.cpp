@@ -8,6 +8,7 @@
 // alone on the clear colour, its silhouette (pixels that are not the clear
 // colour) and its colours.
 #include "CharacterDemo.h"
+#include "CharacterHoles.h"
 #include "tessera/lod/LodPolicy.h"
 
 #include <gtest/gtest.h>
@@ -31,14 +32,12 @@ struct Silhouette {
     double colour = 0.0;   ///< mean absolute difference where both show, 0..255
 };
 
-bool isClear(const std::vector<uint8_t>& p, size_t i) { return p[i] == 255 && p[i + 1] == 0 && p[i + 2] == 255; }
-
 Silhouette compare(const Rgba8Image& reference, const Rgba8Image& fallback) {
     Silhouette s;
     size_t both = 0, either = 0;
     double colour = 0.0;
     for (size_t i = 0; i + 3 < reference.pixels.size() && i + 3 < fallback.pixels.size(); i += 4) {
-        const bool a = !isClear(reference.pixels, i), b = !isClear(fallback.pixels, i);
+        const bool a = !isMagentaPixel(&reference.pixels[i]), b = !isMagentaPixel(&fallback.pixels[i]);
         s.reference += a;
         s.fallback += b;
         either += a || b;
