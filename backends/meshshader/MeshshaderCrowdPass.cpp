@@ -131,23 +131,27 @@ void MeshshaderCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
         gpu::PassScope pass(frame, kPassNames[tier]);
         vkCmdBindPipeline(frame.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS,
                           tier == TS_LOD_NEAR ? mNear.handle() : mMeshlets.handle());
-        drawTier(frame.cmd(), mLayout, VK_SHADER_STAGE_TASK_BIT_EXT, tier, crowd, resources, descriptors);
+        drawTier(frame.cmd(), mLayout, VK_SHADER_STAGE_TASK_BIT_EXT, tier, crowd, resources, descriptors, false);
     }
 }
 
 void MeshshaderCrowdPass::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd,
                                        MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors,
                                        const shader::ShadowCasterPush& caster) {
+    // The far tier casts its simplified casters' meshlets (GpuCrowd's
+    // recordCasterArgs has the reason); the others their own.
     for (uint32_t tier = TS_LOD_NEAR; tier <= TS_LOD_FAR; ++tier) {
         const ShadowCasterPipeline& shadow = tier == TS_LOD_NEAR ? mNearShadow : mMeshletsShadow;
         shadow.bind(frame.cmd(), caster);
-        drawTier(frame.cmd(), shadow.layout(), shadow.pushStages(), tier, crowd, resources, descriptors);
+        drawTier(frame.cmd(), shadow.layout(), shadow.pushStages(), tier, crowd, resources, descriptors,
+                 tier == TS_LOD_FAR);
     }
 }
 
 void MeshshaderCrowdPass::drawTier(VkCommandBuffer cmd, const gpu::PipelineLayout& layout,
                                    VkShaderStageFlags pushStages, uint32_t tier, GpuCrowd& crowd,
-                                   MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors) {
+                                   MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors,
+                                   bool farCasters) {
     const uint32_t creatures = uint32_t(crowd.creatures().size());
     const auto tables = mTables.descriptors();
     const VkDescriptorBufferInfo groups = mTables.groupsDescriptor();
@@ -177,13 +181,15 @@ void MeshshaderCrowdPass::drawTier(VkCommandBuffer cmd, const gpu::PipelineLayou
             push.first = crowd.creatures()[c].cageFirstIndex;
             push.count = crowd.creatures()[c].cageTriangles;
         } else {
-            const MeshshaderCrowdResources::MeshletRange range = resources.meshlets(tier, c);
+            const MeshshaderCrowdResources::MeshletRange range =
+                farCasters ? resources.farCasterMeshlets(c) : resources.meshlets(tier, c);
             push.first = range.first;
             push.count = range.count;
         }
         vkCmdPushConstants(cmd, layout.handle(), pushStages, 0, sizeof push, &push);
+        const uint32_t command = farCasters ? shader::tsCrowdFarCasterCommand(c) : list;
         mDevice->fn().cmdDrawMeshTasksIndirect(cmd, resources.meshArgs().handle(),
-                                               VkDeviceSize(list) * sizeof(shader::CrowdMeshCommand), 1,
+                                               VkDeviceSize(command) * sizeof(shader::CrowdMeshCommand), 1,
                                                sizeof(shader::CrowdMeshCommand));
     }
 }

@@ -47,9 +47,11 @@ public:
 private:
     void recordCommands(VkCommandBuffer cmd, GpuCrowd& crowd, MeshshaderCrowdResources& resources);
     /// One tier's indirect task draws, per creature its descriptors pushed
-    /// through `layout` and its list's push constants for `pushStages`.
+    /// through `layout` and its list's push constants for `pushStages`;
+    /// `farCasters` (the far tier): its shadow casters' meshlets.
     void drawTier(VkCommandBuffer cmd, const gpu::PipelineLayout& layout, VkShaderStageFlags pushStages,
-                  uint32_t tier, GpuCrowd& crowd, MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors);
+                  uint32_t tier, GpuCrowd& crowd, MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors,
+                  bool farCasters);
 
     gpu::Device* mDevice = nullptr;
     ComputeCrowdCullPass mCull;

@@ -141,7 +141,7 @@ Result<std::unique_ptr<MeshshaderCrowdResources>> MeshshaderCrowdResources::crea
         const uint32_t first = baked.characterClipBase[i];
         const uint32_t end =
             i + 1 < desc.characters.size() ? baked.characterClipBase[i + 1] : uint32_t(baked.clips.size());
-        std::array<MeshletRange, 2> ranges;
+        std::array<MeshletRange, 3> ranges;
         // The middle tier's meshlets cover its triangles (the cage's, or the
         // simplified ones over the same vertices).
         const backend::CrowdCharacterDesc& c = desc.characters[i];
@@ -151,8 +151,17 @@ Result<std::unique_ptr<MeshshaderCrowdResources>> MeshshaderCrowdResources::crea
             middle.bindings = c.cage->bindings;
             middle.indices.assign(c.middleIndices.begin(), c.middleIndices.end());
         }
-        const character::CageMesh* meshes[2] = {c.middleIndices.empty() ? c.cage : &middle, c.farMesh};
-        for (int m = 0; m < 2; ++m) {
+        // The far casters' meshlets: the far mesh's vertices with the
+        // casters' triangles.
+        character::CageMesh farCaster;
+        if (!c.farCasterIndices.empty()) {
+            farCaster.vertices = c.farMesh->vertices;
+            farCaster.bindings = c.farMesh->bindings;
+            farCaster.indices.assign(c.farCasterIndices.begin(), c.farCasterIndices.end());
+        }
+        const character::CageMesh* meshes[3] = {c.middleIndices.empty() ? c.cage : &middle, c.farMesh,
+                                                c.farCasterIndices.empty() ? c.farMesh : &farCaster};
+        for (int m = 0; m < 3; ++m) {
             std::vector<glm::uvec4> texels;
             character::appendBakedVertices(*meshes[m], baked, first, end, range, texels);
             auto appended = appendMeshlets(*meshes[m], framePositions(texels, range), tables);
@@ -167,11 +176,12 @@ Result<std::unique_ptr<MeshshaderCrowdResources>> MeshshaderCrowdResources::crea
     // The commands' fourth word is fixed: near lists take a workgroup per
     // 32 cage triangles per instance, the others' items are their mesh's
     // meshlets per instance (tsCrowdMeshletCommand).
-    std::vector<shader::CrowdMeshCommand> args(TS_CROWD_LISTS, shader::CrowdMeshCommand{glm::uvec4(0)});
+    std::vector<shader::CrowdMeshCommand> args(TS_CROWD_MESH_COMMANDS, shader::CrowdMeshCommand{glm::uvec4(0)});
     for (uint32_t c = 0; c < crowd.creatures().size(); ++c) {
         args[TS_LOD_NEAR * TS_CROWD_MAX_CHARACTERS + c].groups.w = groupsOf(crowd.creatures()[c].cageTriangles);
         for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier)
             args[tier * TS_CROWD_MAX_CHARACTERS + c].groups.w = r->meshlets(tier, c).count;
+        args[shader::tsCrowdFarCasterCommand(c)].groups.w = r->farCasterMeshlets(c).count;
     }
 
     const std::string name = "meshshader.crowd[" + std::to_string(id) + "]";
@@ -194,6 +204,10 @@ Result<std::unique_ptr<MeshshaderCrowdResources>> MeshshaderCrowdResources::crea
 
 MeshshaderCrowdResources::MeshletRange MeshshaderCrowdResources::meshlets(uint32_t tier, uint32_t creature) const {
     return mRanges[creature][tier == TS_LOD_FAR ? 1 : 0];
+}
+
+MeshshaderCrowdResources::MeshletRange MeshshaderCrowdResources::farCasterMeshlets(uint32_t creature) const {
+    return mRanges[creature][2];
 }
 
 uint64_t MeshshaderCrowdResources::bytes() const {

@@ -34,6 +34,9 @@ public:
     /// Creature `creature`'s meshlets of tier `tier` (TS_LOD_MIDDLE: its
     /// cage, TS_LOD_FAR: its far mesh).
     MeshletRange meshlets(uint32_t tier, uint32_t creature) const;
+    /// Creature `creature`'s far shadow casters' meshlets (its far mesh's
+    /// vertices, CrowdCharacterDesc::farCasterIndices' triangles).
+    MeshletRange farCasterMeshlets(uint32_t creature) const;
     /// Meshlets of every mesh, and those whose normal cone can cull them.
     uint32_t meshletCount() const { return mMeshletCount; }
     uint32_t conedMeshletCount() const { return mConed; }
@@ -41,13 +44,14 @@ public:
     gpu::Buffer& meshletBuffer() { return mMeshlets; }
     gpu::Buffer& meshletVertices() { return mVertices; }
     gpu::Buffer& meshletTriangles() { return mTriangles; }
-    /// A CrowdMeshCommand per list (tier * TS_CROWD_MAX_CHARACTERS + creature).
+    /// A CrowdMeshCommand per list (tier * TS_CROWD_MAX_CHARACTERS + creature),
+    /// then per creature for its far casters (tsCrowdFarCasterCommand).
     gpu::Buffer& meshArgs() { return mArgs; }
 
     uint64_t bytes() const override;
 
 private:
-    std::vector<std::array<MeshletRange, 2>> mRanges; ///< per creature: cage, far mesh
+    std::vector<std::array<MeshletRange, 3>> mRanges; ///< per creature: cage, far mesh, far casters
     uint32_t mMeshletCount = 0, mConed = 0;
     gpu::Buffer mMeshlets, mVertices, mTriangles, mArgs;
 };

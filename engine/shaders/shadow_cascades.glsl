@@ -11,25 +11,28 @@
 // coordinate, z its reference depth. Offset along the normal by a few
 // texels of that cascade (which grows with the cascade, as acne would) and
 // towards the sun by the constant bias, against self-shadowing acne.
-vec3 tsShadowMapCoord(ShadowCascadeUniforms u, uint index, vec3 world, vec3 normal) {
-    vec3 offset = world + normal * (u.texelSizes[index] * u.params.z);
-    vec4 clip = u.viewProjection[index] * vec4(offset, 1.0);
+// A macro over the includer's block rather than a function taking
+// ShadowCascadeUniforms: a struct parameter is a copy, and a copy indexed by
+// a per-pixel cascade makes a CPU rasterizer load and select all four
+// matrices for every pixel instead of reading one from the block.
+#define tsShadowMapCoord(u, index, world, normal) \
+    tsShadowMapCoordIn((u).viewProjection[index], (u).texelSizes[index] * (u).params.z, \
+                       (u).params.w / (u).depthRanges[index], world, normal)
+
+vec3 tsShadowMapCoordIn(mat4 viewProjection, float normalOffset, float depthBias, vec3 world, vec3 normal) {
+    vec4 clip = viewProjection * vec4(world + normal * normalOffset, 1.0);
     vec3 p = clip.xyz / clip.w;
-    return vec3(p.xy * 0.5 + 0.5, p.z - u.params.w / u.depthRanges[index]);
+    return vec3(p.xy * 0.5 + 0.5, p.z - depthBias);
 }
 
-// Sunlight kept at `world` (1 lit, 0 in shadow), at `viewDepth` metres along
-// the view axis: the cascade it lies in, n x n taps a texel apart of the
-// hardware's bilinear comparison (n = pcf.x: 3 filters over 4x4 texels, 2
-// over 3x3 for a CPU rasterizer, where each tap is filtered in software,
-// 1 over 2x2). Beyond the last cascade, and with no cascades, fully lit.
-float tsCascadedShadow(ShadowCascadeUniforms u, sampler2DArrayShadow map, vec3 world, vec3 normal, float viewDepth) {
-    uint count = uint(u.params.x);
-    uint index = tsShadowCascadeIndex(u.farDistances, count, viewDepth);
-    if (index >= count) return 1.0;
-    vec3 c = tsShadowMapCoord(u, index, world, normal);
-    float texel = u.params.y;
-    int taps = int(u.pcf.x);
+// Sunlight kept at map coordinate `c` of layer `index` (1 lit, 0 in
+// shadow): n x n taps `texel` apart of the hardware's bilinear comparison
+// (n = taps: 3 filters over 4x4 texels, 2 over 3x3 for a CPU rasterizer,
+// where each tap is filtered in software, 1 over 2x2).
+float tsShadowTaps(sampler2DArrayShadow map, uint index, vec3 c, float texel, int taps) {
+    // One tap without the loop: a CPU rasterizer runs the loop's control
+    // for every pixel group.
+    if (taps == 1) return texture(map, vec4(c.xy, float(index), c.z));
     // The taps centred on the receiver: offsets -1, 0, 1 texels for 3,
     // -0.5 and 0.5 for 2, 0 for 1.
     vec2 first = c.xy - vec2(0.5 * float(taps - 1) * texel);

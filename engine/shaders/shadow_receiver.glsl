@@ -17,8 +17,13 @@ layout(set = 0, binding = TS_BINDING_SHADOW_MAP) uniform sampler2DArrayShadow sh
 // 1 lit, 0 in a character's shadow.
 float tsCascadedSunlight(vec3 world, vec3 normal) {
     if (shadowCascades.params.x < 0.5) return 1.0;
+    // The cascade the receiver lies in; beyond the last, lit.
     float viewDepth = -(frame.view * vec4(world, 1.0)).z;
-    return tsCascadedShadow(shadowCascades, shadowCascadeMap, world, normal, viewDepth);
+    uint count = uint(shadowCascades.params.x);
+    uint index = tsShadowCascadeIndex(shadowCascades.farDistances, count, viewDepth);
+    if (index >= count) return 1.0;
+    return tsShadowTaps(shadowCascadeMap, index, tsShadowMapCoord(shadowCascades, index, world, normal),
+                        shadowCascades.params.y, int(shadowCascades.pcf.x));
 }
 
 #endif

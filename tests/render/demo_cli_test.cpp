@@ -68,7 +68,7 @@ TEST(DemoCli, BadTerrainFlagsFailClearly) {
 }
 
 TEST(DemoCli, ShadowsFlagIsCheckedAgainstTheBackend) {
-    expectUsageError({"--shadows", "soft"}, "--shadows expects auto, blob or cascaded");
+    expectUsageError({"--shadows", "soft"}, "--shadows expects auto, blob, cascaded or none");
     // Blob shadows are every backend's; cascaded ones only where drawn
     // (every GPU backend; the null backend draws nothing).
     expectCleanFailure({"--shadows", "cascaded", "--backend", "null", "--scene", "terrain", "--frames", "1"},

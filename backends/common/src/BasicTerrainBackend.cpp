@@ -133,8 +133,9 @@ void BasicTerrainBackend::beginFrame(const backend::FrameInfo& frame) {
     const bool cascadedAsked = frame.shadows == backend::Shadows::Cascaded ||
                                (frame.shadows == backend::Shadows::Auto && mCascadedOnAuto);
     mCascadedShadows = full && cascadedAsked && capabilities(nullptr).cascadedShadows && !frame.shadowCascades.empty();
-    // Cascaded shadows replace the blobs: no mask is drawn, none is read.
-    if (mCascadedShadows) mFrameInfo.shadowCasters = {};
+    // Cascaded shadows replace the blobs: no mask is drawn, none is read;
+    // without shadows neither is.
+    if (mCascadedShadows || frame.shadows == backend::Shadows::None) mFrameInfo.shadowCasters = {};
     mFrameUniforms = mFrame->pushUniform(buildFrameUniforms(mFrameInfo, mDeferTerrain));
     mShadowMaps.beginFrame(*mFrame, mCascadedShadows ? frame.shadowCascades : std::span<const scene::ShadowCascade>{},
                            frame.sunDirection);

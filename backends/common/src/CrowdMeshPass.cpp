@@ -38,9 +38,17 @@ void CrowdMeshPass::record(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescr
 
 void CrowdMeshPass::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
                                  const shader::ShadowCasterPush& caster) {
-    for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier)
-        mPipeline.recordShadow(frame, crowd, descriptors, crowd.lists().handle(), crowd.indices().handle(),
-                               caster, [&](VkCommandBuffer cmd, uint32_t c) { drawList(cmd, crowd, tier, c); });
+    // The middle tier casts its own mesh (its creatures receive their own
+    // shadows, so a coarser caster would shadow their surface); the far tier
+    // casts its simplified casters (GpuCrowd::casterArgs, copied in by
+    // recordCasterArgs), a few texels of a cascade wide.
+    mPipeline.recordShadow(frame, crowd, descriptors, crowd.lists().handle(), crowd.indices().handle(), caster,
+                           [&](VkCommandBuffer cmd, uint32_t c) { drawList(cmd, crowd, TS_LOD_MIDDLE, c); });
+    mPipeline.recordShadow(frame, crowd, descriptors, crowd.lists().handle(), crowd.indices().handle(), caster,
+                           [&](VkCommandBuffer cmd, uint32_t c) {
+                               const VkDeviceSize offset = VkDeviceSize(c) * TS_CROWD_ARG_DRAW_WORDS * sizeof(uint32_t);
+                               vkCmdDrawIndexedIndirect(cmd, crowd.casterArgs().handle(), offset, 1, 0);
+                           });
 }
 
 } // namespace tessera::backends

@@ -3,10 +3,14 @@
 #include "tessera/backend/CrowdChecks.h"
 #include "tessera/character/BakedAnimation.h"
 #include "tessera/character/BakedVertices.h"
+#include "tessera/gpu/Barriers.h"
 #include "tessera/tessellator/TrianglePatternLibrary.h"
 
 #include <algorithm>
 #include <cstring>
+#include <span>
+#include <tuple>
+#include <utility>
 
 namespace tessera::backends {
 
@@ -54,18 +58,23 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
         creature.cageTriangles = character->triangleCount();
         vertices.insert(vertices.end(), character->gpuVertices().begin(), character->gpuVertices().end());
         indices.insert(indices.end(), character->cageIndices().begin(), character->cageIndices().end());
-        creature.middleFirstIndex = creature.cageFirstIndex;
-        creature.middleTriangles = creature.cageTriangles;
-        if (!c.middleIndices.empty()) {
-            creature.middleFirstIndex = uint32_t(indices.size());
-            creature.middleTriangles = uint32_t(c.middleIndices.size() / 3);
-            indices.insert(indices.end(), c.middleIndices.begin(), c.middleIndices.end());
-        }
+        // A tier's own triangles over a mesh's vertices, where given: first
+        // index and triangles, else the mesh's own.
+        auto appendTriangles = [&](std::span<const uint32_t> own, uint32_t first, uint32_t triangles) {
+            if (own.empty()) return std::pair{first, triangles};
+            const std::pair range{uint32_t(indices.size()), uint32_t(own.size() / 3)};
+            indices.insert(indices.end(), own.begin(), own.end());
+            return range;
+        };
+        std::tie(creature.middleFirstIndex, creature.middleTriangles) =
+            appendTriangles(c.middleIndices, creature.cageFirstIndex, creature.cageTriangles);
         creature.farFirstVertex = uint32_t(vertices.size());
         creature.farFirstIndex = uint32_t(indices.size());
         creature.farTriangles = c.farMesh->triangleCount();
         vertices.insert(vertices.end(), far.value().begin(), far.value().end());
         indices.insert(indices.end(), c.farMesh->indices.begin(), c.farMesh->indices.end());
+        std::tie(creature.farCasterFirstIndex, creature.farCasterTriangles) =
+            appendTriangles(c.farCasterIndices, creature.farFirstIndex, creature.farTriangles);
         crowd->mCreatures.push_back(creature);
         crowd->mLevelPerPixel.push_back(c.levelPerPixel);
         crowd->mNearStride = std::max(crowd->mNearStride, character->vertexCount());
@@ -194,7 +203,38 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
         }
     args[TS_CROWD_ARG_DISPATCH + 1] = 1;
     args[TS_CROWD_ARG_DISPATCH + 2] = 1;
+    // The far casters' commands: the far lists' (their instances) over the
+    // casters' triangles; only the instance counts change per frame.
+    std::vector<uint32_t> casterArgs(crowd->mCreatures.size() * TS_CROWD_ARG_DRAW_WORDS);
+    for (uint32_t c = 0; c < crowd->mCreatures.size(); ++c) {
+        const Creature& k = crowd->mCreatures[c];
+        const uint32_t* far = &args[(TS_LOD_FAR * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS];
+        uint32_t* cmd = &casterArgs[c * TS_CROWD_ARG_DRAW_WORDS];
+        std::copy(far, far + TS_CROWD_ARG_DRAW_WORDS, cmd);
+        cmd[0] = 3 * k.farCasterTriangles;
+        cmd[2] = k.farCasterFirstIndex;
+    }
+    crowd->mCasterArgs = gpu::Buffer(device, casterArgs.size() * sizeof(uint32_t),
+                                     dst | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
+                                     "crowd.casterIndirect");
+    crowd->mCasterArgs.upload(std::span<const uint32_t>(casterArgs));
     return crowd;
+}
+
+void GpuCrowd::recordCasterArgs(VkCommandBuffer cmd) {
+    // Whichever pass wrote the counts (compute, a copy, transform feedback)
+    // and the previous frame's caster draws that read these commands.
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    std::vector<VkBufferCopy> counts(mCreatures.size());
+    for (uint32_t c = 0; c < counts.size(); ++c) {
+        const VkDeviceSize word = sizeof(uint32_t);
+        counts[c] = {((TS_LOD_FAR * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS + 1) * word,
+                     (c * TS_CROWD_ARG_DRAW_WORDS + 1) * word, word};
+    }
+    vkCmdCopyBuffer(cmd, mArgs.handle(), mCasterArgs.handle(), uint32_t(counts.size()), counts.data());
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
 }
 
 uint32_t GpuCrowd::uploadInstances(uint32_t slot, std::span<const shader::CrowdInstance> instances) {
@@ -257,7 +297,7 @@ shader::CrowdUniforms GpuCrowd::uniforms(const backend::CrowdDrawInfo& draw, uin
 
 uint64_t GpuCrowd::bytes() const {
     uint64_t total = mVertices.size() + mIndices.size() + mBaked.size() + mClips.size() + mState.size() +
-                     mBakedVertices.size() + mClipMeshes.size() + mLists.size() + mArgs.size() + mNear.size() +
+                     mBakedVertices.size() + mClipMeshes.size() + mLists.size() + mArgs.size() + mCasterArgs.size() + mNear.size() +
                      mNearOwners.size() + mNearSlotRecords.size() + mNearCommands.size() + mPatternCodes.size() +
                      mPatternIndices.size();
     for (const gpu::Buffer& b : mInstances) total += b.size();

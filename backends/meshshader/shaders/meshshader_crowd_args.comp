@@ -8,7 +8,7 @@
 #include "tessera/shaders/CrowdInstance.h"
 #include "tessera/shaders/CrowdMeshlet.h"
 
-layout(local_size_x = TS_CROWD_LISTS) in;
+layout(local_size_x = TS_CROWD_MESH_COMMANDS) in;
 
 layout(std430, set = 0, binding = TS_BINDING_CROWD_ARGS) readonly buffer ArgsBlock {
     uint crowdArgs[];
@@ -18,9 +18,12 @@ layout(std430, set = 0, binding = TS_BINDING_CROWD_MESH_ARGS) buffer MeshArgsBlo
 };
 
 void main() {
-    uint list = gl_LocalInvocationID.x;
+    uint command = gl_LocalInvocationID.x;
+    // A far caster's command counts its creature's far list.
+    uint list = command < TS_CROWD_LISTS ? command
+                                         : TS_LOD_FAR * TS_CROWD_MAX_CHARACTERS + (command - TS_CROWD_LISTS);
     uint count = crowdArgs[list * TS_CROWD_ARG_DRAW_WORDS + 1u];
-    uint w = meshArgs[list].groups.w;
-    meshArgs[list].groups = list < TS_CROWD_MAX_CHARACTERS ? tsCrowdMeshCommand(count, w)
-                                                           : tsCrowdMeshletCommand(count, w);
+    uint w = meshArgs[command].groups.w;
+    meshArgs[command].groups = list < TS_CROWD_MAX_CHARACTERS ? tsCrowdMeshCommand(count, w)
+                                                              : tsCrowdMeshletCommand(count, w);
 }

@@ -88,6 +88,7 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
     if (given("--shadows"))
         o.shadows = t.shadows == "blob"       ? backend::Shadows::Blob
                     : t.shadows == "cascaded" ? backend::Shadows::Cascaded
+                    : t.shadows == "none"     ? backend::Shadows::None
                                               : backend::Shadows::Auto;
     if (given("--sculpt")) o.subdiv.sculpt = t.sculpt == "raise" ? 1 : -1;
     if (given("--terrain-mode")) o.terrainMode = terrain::parseTerrainMode(t.terrainMode);
@@ -109,6 +110,7 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
     if (given("--lod-edge")) o.lodEdge = t.lodEdge;
     if (given("--lod-far-triangles")) o.lodFarTriangles = t.lodFarTriangles;
     if (given("--lod-middle-triangles")) o.lodMiddleTriangles = t.lodMiddleTriangles;
+    if (given("--lod-far-caster-triangles")) o.lodFarCasterTriangles = t.lodFarCasterTriangles;
     if (given("--renderdoc")) o.renderdocFrame = t.renderdocFrame;
     if (given("--device-memory-cap")) o.deviceMemoryCap = t.deviceMemoryCap << 20;
     if (given("--hide-features")) {

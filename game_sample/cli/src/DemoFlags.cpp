@@ -103,6 +103,9 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
     count("--lod-middle-triangles", t.lodMiddleTriangles, 0, 1000000, "N",
           "the middle tier draws at most N of the cage's triangles, simplified over its vertices (default 0 on a "
           "GPU: the whole cage; 1000 on lavapipe)");
+    count("--lod-far-caster-triangles", t.lodFarCasterTriangles, 0, 100000, "N",
+          "with --shadows cascaded, far creatures cast their far mesh simplified to at most N triangles (default "
+          "96; 0: the far mesh itself)");
     flag("--lod-colors", o.lodColors, "tint characters by LOD tier: near green, middle yellow, far red");
     text("--crowd-tiers", o.crowdTiers, "FILE",
          "write the last frame's crowd agents per LOD tier, as the backend binned them and as the CPU reference "
@@ -121,10 +124,11 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
            "where the full look shades the terrain: auto (default: deferred where the backend resolves in compute "
            "on a GPU, i.e. hulldomain; forward on r2vb, streamout and lavapipe) | "
            "forward (in its fragments) | deferred (once per pixel after the main pass; docs/LOOKS.md)");
-    choice("--shadows", t.shadows, {"auto", "blob", "cascaded"}, "S",
+    choice("--shadows", t.shadows, {"auto", "blob", "cascaded", "none"}, "S",
            "the characters' shadows in the full look: auto (default: the backend's cheaper for the device) | "
            "blob (a soft ellipse per character on the terrain, the cheapest) | cascaded (cascaded shadow maps: "
-           "characters shadow the terrain and each other, where the backend draws them; docs/LOOKS.md)");
+           "characters shadow the terrain and each other, where the backend draws them; docs/LOOKS.md) | none (no "
+           "character shadows, to measure what the others cost)");
     text("--sun", t.sun, "az,el",
          "the sun's azimuth (degrees from +X towards +Z) and elevation (1 to 90 degrees); default 36.9,58 "
          "(shadows, sky and fog follow it)");

@@ -53,6 +53,16 @@ backend::CrowdDesc InstancedCrowd::desc(const CharacterAssets& assets, uint32_t 
         auto coarser = character::simplifyCage(cage, {policy.middleMeshTriangles, 0.05f});
         if (coarser) mMiddleIndices[i] = std::move(coarser.value().cageIndices);
     }
+    mFarCasterIndices.assign(assets.size(), {});
+    for (size_t i = 0; i < assets.size(); ++i) {
+        // The far tier's shadow casters: depth only, so neither seams nor
+        // normals bind the simplification; a silhouette a few texels wide
+        // keeps its shape within a tenth of the creature's extent.
+        const character::CageMesh& far = *mFarMeshes[i];
+        if (policy.farCasterTriangles == 0 || far.triangleCount() <= policy.farCasterTriangles) continue;
+        auto coarser = character::simplifyCage(far, {policy.farCasterTriangles, 0.1f});
+        if (coarser) mFarCasterIndices[i] = std::move(coarser.value().cageIndices);
+    }
     for (size_t i = 0; i < assets.size(); ++i) {
         const CrowdAsset& asset = assets[i];
         // The instance's sphere is the box's around its centre: levels per
@@ -65,7 +75,8 @@ backend::CrowdDesc InstancedCrowd::desc(const CharacterAssets& assets, uint32_t 
         cost.farTriangles = mFarMeshes[i]->triangleCount();
         mCosts.push_back(cost);
         mCharacters.push_back(
-            {assets.handle(i), &asset.asset.cage, mFarMeshes[i], mMiddleIndices[i], cost.levelPerPixel});
+            {assets.handle(i), &asset.asset.cage, mFarMeshes[i], mMiddleIndices[i], mFarCasterIndices[i],
+             cost.levelPerPixel});
     }
     const uint32_t nearSlots = policy.budget.maxNearInstances;
     backend::CrowdDesc desc;

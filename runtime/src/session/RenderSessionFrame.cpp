@@ -82,7 +82,8 @@ void RenderSession::renderFrame(uint32_t frameIndex, const scene::Camera& camera
     // The cascades follow the view; fitted only where a backend may draw
     // them, with the device's settings (the backend's layers have them too).
     s.shadowCascades.clear();
-    if (s.look == backend::Look::Full && s.shadows != backend::Shadows::Blob && capabilities().cascadedShadows)
+    const bool mayCascade = s.shadows == backend::Shadows::Auto || s.shadows == backend::Shadows::Cascaded;
+    if (s.look == backend::Look::Full && mayCascade && capabilities().cascadedShadows)
         s.shadowCascades =
             scene::ShadowCascadeFit(scene::ShadowCascadeFit::Settings::forDevice(deviceClass())).fit(camera, s.sunDirection);
     backend::FrameInfo info = s.frameInfo(frameIndex, camera, clearColor, wireframe);

@@ -28,7 +28,8 @@ void main() {
     float viewDepth = probes[i].w;
     const vec3 up = vec3(0.0, 1.0, 0.0);
     uint index = tsShadowCascadeIndex(uCascades.farDistances, uint(uCascades.params.x), viewDepth);
-    vec3 coord = index < uint(uCascades.params.x) ? tsShadowMapCoord(uCascades, index, world, up) : vec3(-1.0);
-    float lit = tsCascadedShadow(uCascades, uShadowMap, world, up, viewDepth);
+    bool inside = index < uint(uCascades.params.x);
+    vec3 coord = inside ? tsShadowMapCoord(uCascades, index, world, up) : vec3(-1.0);
+    float lit = inside ? tsShadowTaps(uShadowMap, index, coord, uCascades.params.y, int(uCascades.pcf.x)) : 1.0;
     results[i] = vec4(coord, float(index) + 0.5 * lit);
 }

@@ -41,6 +41,9 @@ public:
         /// CrowdCharacterDesc::middleIndices).
         uint32_t middleFirstIndex = 0, middleTriangles = 0;
         uint32_t farFirstVertex = 0, farFirstIndex = 0, farTriangles = 0;
+        /// The far tier's shadow casters' triangles over the far mesh's
+        /// vertices (its own, or CrowdCharacterDesc::farCasterIndices).
+        uint32_t farCasterFirstIndex = 0, farCasterTriangles = 0;
         /// Triangles tier `tier` draws per instance (before tessellation).
         uint32_t tierTriangles(uint32_t tier) const {
             return tier == TS_LOD_FAR ? farTriangles : tier == TS_LOD_MIDDLE ? middleTriangles : cageTriangles;
@@ -75,6 +78,15 @@ public:
     gpu::Buffer& state() { return mState; }
     gpu::Buffer& lists() { return mLists; }
     gpu::Buffer& args() { return mArgs; }
+    /// The far tier's shadow casters' indexed indirect commands, one per
+    /// creature: the far lists' commands with the casters' triangles
+    /// (Creature::farCasterFirstIndex); recordCasterArgs copies the frame's
+    /// instance counts in.
+    gpu::Buffer& casterArgs() { return mCasterArgs; }
+    /// Outside any rendering, after the frame's binning wrote args(): copies
+    /// the far lists' instance counts into casterArgs(), for the casters'
+    /// indirect draws that follow.
+    void recordCasterArgs(VkCommandBuffer cmd);
     gpu::Buffer& nearCages() { return mNear; }
     gpu::Buffer& nearOwners() { return mNearOwners; }
     /// The emulated near tier: a CrowdNearSlot per slot, and per creature
@@ -136,7 +148,7 @@ private:
     std::vector<float> mLevelPerPixel;
     uint32_t mMaxInstances = 0, mMaxIds = 0, mNearSlots = 0, mNearStride = 0, mClipCount = 0, mTriangleStride = 0;
     std::vector<uint32_t> mFarVertices; ///< per creature
-    gpu::Buffer mVertices, mIndices, mBaked, mClips, mState, mLists, mArgs, mNear, mNearOwners;
+    gpu::Buffer mVertices, mIndices, mBaked, mClips, mState, mLists, mArgs, mCasterArgs, mNear, mNearOwners;
     gpu::Buffer mNearSlotRecords, mNearCommands, mPatternCodes, mPatternIndices, mBakedVertices, mClipMeshes;
     gpu::BufferView mBakedView, mIndicesView, mClipsView, mNearView, mNearSlotsView, mBakedVerticesView,
         mClipMeshesView;

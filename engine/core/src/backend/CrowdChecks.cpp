@@ -4,9 +4,27 @@
 #include "tessera/character/CageMesh.h"
 
 #include <cmath>
+#include <span>
 #include <string>
 
 namespace tessera::backend {
+namespace {
+
+// An index list over `mesh` (a tier's own triangles over its vertices):
+// whole triangles of vertices it has.
+Status checkIndices(std::span<const uint32_t> indices, const std::string& whose, const char* meshName,
+                    const character::CageMesh& mesh) {
+    auto bad = [](const std::string& what) { return Error{"createCrowd: " + what}; };
+    if (indices.size() % 3 != 0)
+        return bad(whose + " index count (" + std::to_string(indices.size()) + ") is not a multiple of 3");
+    for (uint32_t index : indices)
+        if (index >= mesh.vertices.size())
+            return bad(whose + " index " + std::to_string(index) + " is past its " + meshName + "'s " +
+                       std::to_string(mesh.vertices.size()) + " vertices");
+    return {};
+}
+
+} // namespace
 
 Status checkCrowdDesc(const CrowdDesc& desc) {
     auto bad = [](const std::string& what) { return Error{"createCrowd: " + what}; };
@@ -27,13 +45,9 @@ Status checkCrowdDesc(const CrowdDesc& desc) {
         if (c.farMesh->bindings.size() != c.cage->bindings.size())
             return bad(name + ": its far mesh has " + std::to_string(c.farMesh->bindings.size()) +
                        " skinning matrices, its cage " + std::to_string(c.cage->bindings.size()));
-        if (c.middleIndices.size() % 3 != 0)
-            return bad(name + ": its middle tier's index count (" + std::to_string(c.middleIndices.size()) +
-                       ") is not a multiple of 3");
-        for (uint32_t index : c.middleIndices)
-            if (index >= c.cage->vertices.size())
-                return bad(name + ": its middle tier's index " + std::to_string(index) + " is past its cage's " +
-                           std::to_string(c.cage->vertices.size()) + " vertices");
+        if (Status ok = checkIndices(c.middleIndices, name + ": its middle tier's", "cage", *c.cage); !ok) return ok;
+        if (Status ok = checkIndices(c.farCasterIndices, name + ": its far casters'", "far mesh", *c.farMesh); !ok)
+            return ok;
         if (!(c.levelPerPixel > 0.0f) || !std::isfinite(c.levelPerPixel))
             return bad(name + ": levels per pixel must be a positive number");
     }

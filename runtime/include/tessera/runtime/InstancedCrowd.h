@@ -68,6 +68,9 @@ private:
     /// Per creature: the middle tier's coarser triangles over its cage's
     /// vertices (LodPolicy::middleMeshTriangles; empty: the whole cage).
     std::vector<std::vector<uint32_t>> mMiddleIndices;
+    /// Per creature: the far tier's shadow casters' triangles over its far
+    /// mesh's vertices (LodPolicy::farCasterTriangles; empty: the far mesh).
+    std::vector<std::vector<uint32_t>> mFarCasterIndices;
     lod::LodManager mLod;
     std::vector<shader::CrowdInstance> mInstances;
     std::vector<lod::LodInstance> mLodInstances;

@@ -106,7 +106,7 @@ struct Options {
     backend::Look look = backend::Look::Full;
     /// --terrain-shading auto|forward|deferred: where the full look shades the terrain.
     backend::TerrainShading terrainShading = backend::TerrainShading::Auto;
-    /// --shadows auto|blob|cascaded: the characters' shadows in the full look
+    /// --shadows auto|blob|cascaded|none: the characters' shadows in the full look
     /// (docs/LOOKS.md); cascaded only on a backend that draws them.
     backend::Shadows shadows = backend::Shadows::Auto;
     glm::vec3 sunDirection{0.4f, 0.8f, 0.3f}; ///< --sun: towards the sun (normalised by the backend)
@@ -179,6 +179,8 @@ struct Options {
     std::optional<uint32_t> lodFade;           ///< --lod-fade N: cross-fade frames (0: instant)
     std::optional<uint32_t> lodFarTriangles;   ///< --lod-far-triangles N: the far mesh's triangles at most
     std::optional<uint32_t> lodMiddleTriangles; ///< --lod-middle-triangles N: the middle mesh's (0: the cage)
+    /// --lod-far-caster-triangles N: the far tier's shadow casters' (0: the far mesh)
+    std::optional<uint32_t> lodFarCasterTriangles;
     bool lodColors = false;             ///< --lod-colors: tint instances by LOD tier
 
     /// --agents N (the crowd scene's agents; unset: 2000) or, with --bench

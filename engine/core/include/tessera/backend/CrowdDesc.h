@@ -39,6 +39,11 @@ struct CrowdCharacterDesc {
     /// simplified cage, lod::LodPolicy::middleMeshTriangles); empty: the
     /// cage's own. Must outlive createCrowd only.
     std::span<const uint32_t> middleIndices;
+    /// The far tier's shadow casters' triangles as indices into the far
+    /// mesh's vertices (a simplified far mesh, lod::LodPolicy::
+    /// farCasterTriangles); empty: the far mesh's own. Must outlive
+    /// createCrowd only.
+    std::span<const uint32_t> farCasterIndices;
     /// Near-tier levels per projected pixel (lod::LodCharacter::levelPerPixel).
     float levelPerPixel = 0.01f;
 };

@@ -38,6 +38,7 @@ enum class Shadows : uint32_t {
     Auto = 0,     ///< each backend's cheaper choice for the device (BackendCapabilities::cascadedShadows)
     Blob = 1,     ///< a soft ellipse per character on the terrain: the cheapest
     Cascaded = 2, ///< cascaded shadow maps of the characters: on the terrain and on each other
+    None = 3,     ///< no character shadows: what the others cost is measured against it
 };
 
 struct FrameInfo {

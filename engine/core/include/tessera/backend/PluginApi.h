@@ -16,7 +16,8 @@
 /// crosses the boundary changes layout or namespace (7: DeviceFeatures and
 /// FeatureMask moved to tessera::device, SubdivMeshData to the contract; 8:
 /// DeviceFeatures' mesh-shader fields, BackendCapabilities::usesMeshShaders; 9:
-/// FrameInfo::shadows and shadowCascades, BackendCapabilities::cascadedShadows).
+/// FrameInfo::shadows and shadowCascades, BackendCapabilities::cascadedShadows;
+/// 10: CrowdCharacterDesc::farCasterIndices, Shadows::None).
 
 #include "tessera/backend/Backend.h"
 
@@ -25,14 +26,14 @@
 namespace tessera::backend {
 
 /// The contract version this host and its plugins are built against.
-inline constexpr uint32_t kPluginAbiVersion = 9;
+inline constexpr uint32_t kPluginAbiVersion = 10;
 
 #define TESSERA_PLUGIN_STRINGIFY_(x) #x
 #define TESSERA_PLUGIN_STRINGIFY(x) TESSERA_PLUGIN_STRINGIFY_(x)
 #define TESSERA_PLUGIN_CONCAT_(a, b) a##b
 #define TESSERA_PLUGIN_CONCAT(a, b) TESSERA_PLUGIN_CONCAT_(a, b)
 /// Must equal kPluginAbiVersion (a macro because it builds a symbol name).
-#define TESSERA_PLUGIN_ABI_VERSION 9
+#define TESSERA_PLUGIN_ABI_VERSION 10
 #define TESSERA_PLUGIN_ENTRY_SYMBOL TESSERA_PLUGIN_CONCAT(registerPlugin_v, TESSERA_PLUGIN_ABI_VERSION)
 /// The prefix shared by every version of the entry point, for mismatch reports.
 #define TESSERA_PLUGIN_ENTRY_PREFIX "registerPlugin_v"

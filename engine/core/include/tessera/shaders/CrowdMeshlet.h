@@ -51,6 +51,13 @@ struct CrowdMeshCommand {
 };
 TS_CHECK_SIZE(CrowdMeshCommand, 16)
 
+/// The task-shader commands: one per list, then one per creature for the
+/// far tier's shadow casters (the far list's instances over the simplified
+/// casters' meshlets, lod::LodPolicy::farCasterTriangles).
+#define TS_CROWD_MESH_COMMANDS (TS_CROWD_LISTS + TS_CROWD_MAX_CHARACTERS)
+/// The far casters' command of creature `c`.
+TS_INLINE uint tsCrowdFarCasterCommand(uint c) { return TS_CROWD_LISTS + c; }
+
 /// The command of a list holding `count` instances, each taking
 /// `perInstance` task workgroups.
 TS_INLINE uvec4 tsCrowdMeshCommand(uint count, uint perInstance) {
