@@ -138,20 +138,20 @@ void MeshshaderCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
 void MeshshaderCrowdPass::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd,
                                        MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors,
                                        const shader::ShadowCasterPush& caster) {
-    // The far tier casts its simplified casters' meshlets (GpuCrowd's
-    // recordCasterArgs has the reason); the others their own.
+    // The middle and far tiers cast the far mesh's simplified casters'
+    // meshlets (docs/LOOKS.md, "The casters"); the near tier its own.
     for (uint32_t tier = TS_LOD_NEAR; tier <= TS_LOD_FAR; ++tier) {
         const ShadowCasterPipeline& shadow = tier == TS_LOD_NEAR ? mNearShadow : mMeshletsShadow;
         shadow.bind(frame.cmd(), caster);
         drawTier(frame.cmd(), shadow.layout(), shadow.pushStages(), tier, crowd, resources, descriptors,
-                 tier == TS_LOD_FAR);
+                 tier != TS_LOD_NEAR);
     }
 }
 
 void MeshshaderCrowdPass::drawTier(VkCommandBuffer cmd, const gpu::PipelineLayout& layout,
                                    VkShaderStageFlags pushStages, uint32_t tier, GpuCrowd& crowd,
                                    MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors,
-                                   bool farCasters) {
+                                   bool casters) {
     const uint32_t creatures = uint32_t(crowd.creatures().size());
     const auto tables = mTables.descriptors();
     const VkDescriptorBufferInfo groups = mTables.groupsDescriptor();
@@ -182,12 +182,12 @@ void MeshshaderCrowdPass::drawTier(VkCommandBuffer cmd, const gpu::PipelineLayou
             push.count = crowd.creatures()[c].cageTriangles;
         } else {
             const MeshshaderCrowdResources::MeshletRange range =
-                farCasters ? resources.farCasterMeshlets(c) : resources.meshlets(tier, c);
+                casters ? resources.casterMeshlets(tier, c) : resources.meshlets(tier, c);
             push.first = range.first;
             push.count = range.count;
         }
         vkCmdPushConstants(cmd, layout.handle(), pushStages, 0, sizeof push, &push);
-        const uint32_t command = farCasters ? shader::tsCrowdFarCasterCommand(c) : list;
+        const uint32_t command = casters ? shader::tsCrowdCasterCommand(tier, c) : list;
         mDevice->fn().cmdDrawMeshTasksIndirect(cmd, resources.meshArgs().handle(),
                                                VkDeviceSize(command) * sizeof(shader::CrowdMeshCommand), 1,
                                                sizeof(shader::CrowdMeshCommand));

@@ -48,10 +48,11 @@ private:
     void recordCommands(VkCommandBuffer cmd, GpuCrowd& crowd, MeshshaderCrowdResources& resources);
     /// One tier's indirect task draws, per creature its descriptors pushed
     /// through `layout` and its list's push constants for `pushStages`;
-    /// `farCasters` (the far tier): its shadow casters' meshlets.
+    /// `casters` (the middle and far tiers): the far mesh's simplified
+    /// shadow casters' meshlets.
     void drawTier(VkCommandBuffer cmd, const gpu::PipelineLayout& layout, VkShaderStageFlags pushStages,
                   uint32_t tier, GpuCrowd& crowd, MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors,
-                  bool farCasters);
+                  bool casters);
 
     gpu::Device* mDevice = nullptr;
     ComputeCrowdCullPass mCull;

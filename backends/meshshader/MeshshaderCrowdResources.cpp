@@ -181,7 +181,8 @@ Result<std::unique_ptr<MeshshaderCrowdResources>> MeshshaderCrowdResources::crea
         args[TS_LOD_NEAR * TS_CROWD_MAX_CHARACTERS + c].groups.w = groupsOf(crowd.creatures()[c].cageTriangles);
         for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier)
             args[tier * TS_CROWD_MAX_CHARACTERS + c].groups.w = r->meshlets(tier, c).count;
-        args[shader::tsCrowdFarCasterCommand(c)].groups.w = r->farCasterMeshlets(c).count;
+        for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier)
+            args[shader::tsCrowdCasterCommand(tier, c)].groups.w = r->casterMeshlets(tier, c).count;
     }
 
     const std::string name = "meshshader.crowd[" + std::to_string(id) + "]";
@@ -206,8 +207,9 @@ MeshshaderCrowdResources::MeshletRange MeshshaderCrowdResources::meshlets(uint32
     return mRanges[creature][tier == TS_LOD_FAR ? 1 : 0];
 }
 
-MeshshaderCrowdResources::MeshletRange MeshshaderCrowdResources::farCasterMeshlets(uint32_t creature) const {
-    return mRanges[creature][2];
+MeshshaderCrowdResources::MeshletRange MeshshaderCrowdResources::casterMeshlets(uint32_t tier,
+                                                                               uint32_t creature) const {
+    return mRanges[creature][tier == TS_LOD_FAR ? 2 : 1];
 }
 
 uint64_t MeshshaderCrowdResources::bytes() const {

@@ -34,9 +34,10 @@ public:
     /// Creature `creature`'s meshlets of tier `tier` (TS_LOD_MIDDLE: its
     /// cage, TS_LOD_FAR: its far mesh).
     MeshletRange meshlets(uint32_t tier, uint32_t creature) const;
-    /// Creature `creature`'s far shadow casters' meshlets (its far mesh's
-    /// vertices, CrowdCharacterDesc::farCasterIndices' triangles).
-    MeshletRange farCasterMeshlets(uint32_t creature) const;
+    /// Creature `creature`'s shadow casters' meshlets for tier `tier`, over
+    /// its far mesh's vertices: the far mesh's own (TS_LOD_MIDDLE) or the
+    /// far casters' triangles (TS_LOD_FAR, CrowdCharacterDesc::farCasterIndices).
+    MeshletRange casterMeshlets(uint32_t tier, uint32_t creature) const;
     /// Meshlets of every mesh, and those whose normal cone can cull them.
     uint32_t meshletCount() const { return mMeshletCount; }
     uint32_t conedMeshletCount() const { return mConed; }

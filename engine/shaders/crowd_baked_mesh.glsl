@@ -22,12 +22,18 @@ struct CrowdBakedMesh {
 };
 
 // The mesh list entry `entry` draws (the cage for the middle tier, the far
-// mesh for the far tier); tsCrowdSelectAtLevel(entry, ...) comes first (it
-// sets the clip and phase).
+// mesh for the far tier; as shadow casters both tiers draw the far mesh's
+// vertices, under the casters' simplified triangles: docs/LOOKS.md, "The
+// casters"); tsCrowdSelectAtLevel(entry, ...) comes first (it sets the clip
+// and phase).
 CrowdBakedMesh tsCrowdBakedMesh(CrowdListEntry entry) {
     CrowdInstance instance = tsCrowdInstance(entry.instance);
     CrowdCharacter c = uCrowd.characters[min(instance.ids.y, TS_CROWD_MAX_CHARACTERS - 1u)];
+#ifdef TS_SHADOW_CASTER
+    bool far = true;
+#else
     bool far = ((entry.flags >> 8u) & 255u) == TS_LOD_FAR;
+#endif
     uvec4 meshes = texelFetch(uClipMeshes, int(instance.ids.z));
     CrowdBakedMesh m;
     m.vertices = far ? c.mesh.w : c.mesh.y;

@@ -38,17 +38,15 @@ void CrowdMeshPass::record(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescr
 
 void CrowdMeshPass::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
                                  const shader::ShadowCasterPush& caster) {
-    // The middle tier casts its own mesh (its creatures receive their own
-    // shadows, so a coarser caster would shadow their surface); the far tier
-    // casts its simplified casters (GpuCrowd::casterArgs, copied in by
-    // recordCasterArgs), a few texels of a cascade wide.
-    mPipeline.recordShadow(frame, crowd, descriptors, crowd.lists().handle(), crowd.indices().handle(), caster,
-                           [&](VkCommandBuffer cmd, uint32_t c) { drawList(cmd, crowd, TS_LOD_MIDDLE, c); });
-    mPipeline.recordShadow(frame, crowd, descriptors, crowd.lists().handle(), crowd.indices().handle(), caster,
-                           [&](VkCommandBuffer cmd, uint32_t c) {
-                               const VkDeviceSize offset = VkDeviceSize(c) * TS_CROWD_ARG_DRAW_WORDS * sizeof(uint32_t);
-                               vkCmdDrawIndexedIndirect(cmd, crowd.casterArgs().handle(), offset, 1, 0);
-                           });
+    // Both tiers cast the far mesh simplified for depth (GpuCrowd::casterArgs,
+    // copied in by recordCasterArgs; the caster variant of crowd_mesh.vert
+    // reads the far mesh's vertices for either list).
+    for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier)
+        mPipeline.recordShadow(frame, crowd, descriptors, crowd.lists().handle(), crowd.indices().handle(), caster,
+                               [&](VkCommandBuffer cmd, uint32_t c) {
+                                   vkCmdDrawIndexedIndirect(cmd, crowd.casterArgs().handle(),
+                                                            GpuCrowd::casterArgsOffset(tier, c), 1, 0);
+                               });
 }
 
 } // namespace tessera::backends

@@ -203,17 +203,21 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
         }
     args[TS_CROWD_ARG_DISPATCH + 1] = 1;
     args[TS_CROWD_ARG_DISPATCH + 2] = 1;
-    // The far casters' commands: the far lists' (their instances) over the
-    // casters' triangles; only the instance counts change per frame.
-    std::vector<uint32_t> casterArgs(crowd->mCreatures.size() * TS_CROWD_ARG_DRAW_WORDS);
-    for (uint32_t c = 0; c < crowd->mCreatures.size(); ++c) {
-        const Creature& k = crowd->mCreatures[c];
-        const uint32_t* far = &args[(TS_LOD_FAR * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS];
-        uint32_t* cmd = &casterArgs[c * TS_CROWD_ARG_DRAW_WORDS];
-        std::copy(far, far + TS_CROWD_ARG_DRAW_WORDS, cmd);
-        cmd[0] = 3 * k.farCasterTriangles;
-        cmd[2] = k.farCasterFirstIndex;
-    }
+    // The casters' commands: the middle and far lists' (their instances)
+    // over the casters' triangles; only the instance counts change per frame.
+    std::vector<uint32_t> casterArgs(2 * TS_CROWD_MAX_CHARACTERS * TS_CROWD_ARG_DRAW_WORDS);
+    for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier)
+        for (uint32_t c = 0; c < crowd->mCreatures.size(); ++c) {
+            const Creature& k = crowd->mCreatures[c];
+            const uint32_t* list = &args[(tier * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS];
+            uint32_t* cmd = &casterArgs[casterArgsOffset(tier, c) / sizeof(uint32_t)];
+            std::copy(list, list + TS_CROWD_ARG_DRAW_WORDS, cmd);
+            // The middle tier's creatures (64 pixels and more) keep their
+            // limbs' shadows with the whole far mesh; the far tier's are a
+            // few texels and cast the simplified casters.
+            cmd[0] = 3 * (tier == TS_LOD_FAR ? k.farCasterTriangles : k.farTriangles);
+            cmd[2] = tier == TS_LOD_FAR ? k.farCasterFirstIndex : k.farFirstIndex;
+        }
     crowd->mCasterArgs = gpu::Buffer(device, casterArgs.size() * sizeof(uint32_t),
                                      dst | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
                                      "crowd.casterIndirect");
@@ -226,12 +230,12 @@ void GpuCrowd::recordCasterArgs(VkCommandBuffer cmd) {
     // and the previous frame's caster draws that read these commands.
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
-    std::vector<VkBufferCopy> counts(mCreatures.size());
-    for (uint32_t c = 0; c < counts.size(); ++c) {
-        const VkDeviceSize word = sizeof(uint32_t);
-        counts[c] = {((TS_LOD_FAR * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS + 1) * word,
-                     (c * TS_CROWD_ARG_DRAW_WORDS + 1) * word, word};
-    }
+    std::vector<VkBufferCopy> counts;
+    const VkDeviceSize word = sizeof(uint32_t);
+    for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier)
+        for (uint32_t c = 0; c < mCreatures.size(); ++c)
+            counts.push_back({((tier * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS + 1) * word,
+                              casterArgsOffset(tier, c) + word, word});
     vkCmdCopyBuffer(cmd, mArgs.handle(), mCasterArgs.handle(), uint32_t(counts.size()), counts.data());
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);

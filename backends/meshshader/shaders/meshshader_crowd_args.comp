@@ -19,9 +19,8 @@ layout(std430, set = 0, binding = TS_BINDING_CROWD_MESH_ARGS) buffer MeshArgsBlo
 
 void main() {
     uint command = gl_LocalInvocationID.x;
-    // A far caster's command counts its creature's far list.
-    uint list = command < TS_CROWD_LISTS ? command
-                                         : TS_LOD_FAR * TS_CROWD_MAX_CHARACTERS + (command - TS_CROWD_LISTS);
+    // A caster's command counts its list (the middle's, then the far's).
+    uint list = command < TS_CROWD_LISTS ? command : TS_LOD_MIDDLE * TS_CROWD_MAX_CHARACTERS + (command - TS_CROWD_LISTS);
     uint count = crowdArgs[list * TS_CROWD_ARG_DRAW_WORDS + 1u];
     uint w = meshArgs[command].groups.w;
     meshArgs[command].groups = list < TS_CROWD_MAX_CHARACTERS ? tsCrowdMeshCommand(count, w)

@@ -78,14 +78,19 @@ public:
     gpu::Buffer& state() { return mState; }
     gpu::Buffer& lists() { return mLists; }
     gpu::Buffer& args() { return mArgs; }
-    /// The far tier's shadow casters' indexed indirect commands, one per
-    /// creature: the far lists' commands with the casters' triangles
-    /// (Creature::farCasterFirstIndex); recordCasterArgs copies the frame's
-    /// instance counts in.
+    /// The middle and far tiers' shadow casters' indexed indirect commands,
+    /// one per (tier, creature) at casterArgsOffset: each list's command with
+    /// the casters' triangles (Creature::farCasterFirstIndex, over the far
+    /// mesh's vertices); recordCasterArgs copies the frame's instance counts
+    /// in.
     gpu::Buffer& casterArgs() { return mCasterArgs; }
+    static VkDeviceSize casterArgsOffset(uint32_t tier, uint32_t creature) {
+        return VkDeviceSize((tier - TS_LOD_MIDDLE) * TS_CROWD_MAX_CHARACTERS + creature) * TS_CROWD_ARG_DRAW_WORDS *
+               sizeof(uint32_t);
+    }
     /// Outside any rendering, after the frame's binning wrote args(): copies
-    /// the far lists' instance counts into casterArgs(), for the casters'
-    /// indirect draws that follow.
+    /// the middle and far lists' instance counts into casterArgs(), for the
+    /// casters' indirect draws that follow.
     void recordCasterArgs(VkCommandBuffer cmd);
     gpu::Buffer& nearCages() { return mNear; }
     gpu::Buffer& nearOwners() { return mNearOwners; }

@@ -61,10 +61,11 @@ struct LodPolicy {
     uint32_t middleMeshTriangles = 0;
     /// The far tier's shadow casters (the cascaded shadow maps' depth-only
     /// passes): the far mesh's own vertices with its triangles simplified to
-    /// at most this many; 0 casts the far mesh itself. A far creature is a
-    /// few pixels tall and its shadow a few texels of a cascade; the
-    /// casters' vertex work, paid again in every cascade, is what shadows
-    /// cost a crowd (docs/LOOKS.md, "The cost and auto").
+    /// at most this many; 0 casts the far mesh itself (as the middle tier's
+    /// casters do). A far creature is a few pixels tall and its shadow a few
+    /// texels of a cascade; the casters' vertex work, paid again in every
+    /// cascade, is most of what shadows cost a crowd (docs/LOOKS.md, "The
+    /// cost and auto").
     uint32_t farCasterTriangles = 96;
     LodBudget budget;
 

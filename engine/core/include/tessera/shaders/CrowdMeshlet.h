@@ -51,12 +51,14 @@ struct CrowdMeshCommand {
 };
 TS_CHECK_SIZE(CrowdMeshCommand, 16)
 
-/// The task-shader commands: one per list, then one per creature for the
-/// far tier's shadow casters (the far list's instances over the simplified
-/// casters' meshlets, lod::LodPolicy::farCasterTriangles).
-#define TS_CROWD_MESH_COMMANDS (TS_CROWD_LISTS + TS_CROWD_MAX_CHARACTERS)
-/// The far casters' command of creature `c`.
-TS_INLINE uint tsCrowdFarCasterCommand(uint c) { return TS_CROWD_LISTS + c; }
+/// The task-shader commands: one per list, then one per middle and far list
+/// for its shadow casters (the list's instances over the far mesh's
+/// simplified casters' meshlets, lod::LodPolicy::farCasterTriangles).
+#define TS_CROWD_MESH_COMMANDS (TS_CROWD_LISTS + 2u * TS_CROWD_MAX_CHARACTERS)
+/// The casters' command of list (tier, creature), tier middle or far.
+TS_INLINE uint tsCrowdCasterCommand(uint tier, uint c) {
+    return TS_CROWD_LISTS + (tier - TS_LOD_MIDDLE) * TS_CROWD_MAX_CHARACTERS + c;
+}
 
 /// The command of a list holding `count` instances, each taking
 /// `perInstance` task workgroups.
