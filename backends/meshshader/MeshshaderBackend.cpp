@@ -117,6 +117,8 @@ protected:
                                      frame.uniforms, mShadowMaps.writes());
         mCrowdPass.recordDraws(*mFrame, crowd, crowd.extensionAs<MeshshaderCrowdResources>(), descriptors);
     }
+    // The casters' task commands are written with the others in crowd.cull.
+    void prepareCrowdShadow(GpuCrowd& /*crowd*/) override {}
     void recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame, const shader::ShadowCasterPush& caster) override {
         CrowdDescriptors descriptors(CrowdDescriptors::Mode::Storage, crowd, frame.slot, mFrameUniforms,
                                      frame.uniforms, mShadowMaps.writes());

@@ -181,7 +181,7 @@ void BasicCharacterBackend::drawCrowd(backend::CrowdHandle handle, const backend
     recordCrowdPasses(*crowd, frame);
     recordCrowdCountsCopy(mFrame->cmd(), *crowd, frame.slot);
     if (mCascadedShadows) {
-        crowd->recordCasterArgs(mFrame->cmd());
+        prepareCrowdShadow(*crowd);
         mShadowMaps.record(*mFrame, "shadows.crowd", [&](uint32_t, const shader::ShadowCasterPush& caster) {
             recordCrowdShadow(*crowd, frame, caster);
         });

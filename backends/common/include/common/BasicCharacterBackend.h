@@ -134,6 +134,12 @@ protected:
     /// per instance); outside the main pass.
     virtual void recordCrowdShadow(GpuCrowd& /*crowd*/, const CrowdFrame& /*frame*/,
                                    const shader::ShadowCasterPush& /*caster*/) {}
+    /// Cascaded shadows, before the casters' passes (outside any rendering):
+    /// what recordCrowdShadow's draws read and the binning did not write.
+    /// By default the middle and far tiers' indexed caster commands
+    /// (GpuCrowd::recordCasterArgs); a backend drawing its casters otherwise
+    /// overrides it.
+    virtual void prepareCrowdShadow(GpuCrowd& crowd) { crowd.recordCasterArgs(mFrame->cmd()); }
     /// GPU passes one drawCrowd records (passes and draws), for FrameReport::passes.
     virtual uint32_t crowdPassCount() const { return 0; }
 
