@@ -18,7 +18,8 @@ backend::CrowdTierCounts NullCrowd::draw(const backend::CrowdDrawInfo& draw) {
         if (!backend::crowdInstanceValid(instance, uint32_t(mState.size()), uint32_t(mCreatures.size()), mClips))
             continue;
         uint32_t& state = mState[instance.ids.x];
-        state = shader::tsLodUpdate(state, instance.sphere, p);
+        state = shader::tsLodUpdate(state, instance.sphere, p,
+                                    draw.occluders.empty() ? nullptr : draw.occluders.data());
         const uint32_t tier = shader::tsLodStateTier(state);
         if (tier == TS_LOD_NONE) continue;
         const Creature& creature = mCreatures[instance.ids.y];

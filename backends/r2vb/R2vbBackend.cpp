@@ -181,6 +181,7 @@ protected:
         in.instanceCount = frame.instanceCount;
         in.uniforms = frame.uniforms.descriptor();
         in.instances = crowd.instancesView(frame.slot);
+        in.occluders = crowd.occludersView(frame.slot);
         in.constants.pyramid = glm::uvec4(targets.pyramidSide(), targets.pyramidTop(), 0u, targets.listRegionTexels());
         const std::vector<glm::uvec2>& ranges = crowd.creatureRanges(frame.slot);
         for (uint32_t c = 0; c < ranges.size() && c < TS_CROWD_MAX_CHARACTERS; ++c) {

@@ -101,9 +101,10 @@ void R2vbCrowdBinningPass::updateState(VkCommandBuffer cmd, crowd::FrameInputs& 
     crowd::beginArea(cmd, targets, {{0, 0}, {next.width(), next.height()}}, none);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mState.handle());
     const VkDescriptorImageInfo state = sampled(last);
-    const VkWriteDescriptorSet writes[3] = {
+    const VkWriteDescriptorSet writes[4] = {
         bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &in.uniforms),
-        texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances), imageWrite(R2VB_CROWD_BINDING_STATE, &state)};
+        texelWrite(TS_BINDING_CROWD_INSTANCES, &in.instances), imageWrite(R2VB_CROWD_BINDING_STATE, &state),
+        texelWrite(TS_BINDING_CROWD_OCCLUDERS, &in.occluders)};
     in.constants.target = sizeOf(next);
     crowd::push(*mDevice, cmd, mLayout, writes, in.constants);
     vkCmdDraw(cmd, in.instanceCount, 1, 0, 0);

@@ -28,6 +28,7 @@ gpu::PipelineLayout layout(gpu::Device& device, std::string name) {
                                 {TS_BINDING_CROWD_BAKED, texels, stages},
                                 {TS_BINDING_CROWD_CLIPS, texels, stages},
                                 {TS_BINDING_CROWD_SLOTS, texels, stages},
+                                {TS_BINDING_CROWD_OCCLUDERS, texels, stages},
                                 {R2VB_CROWD_BINDING_STATE, image, stages},
                                 {R2VB_CROWD_BINDING_EVEN, image, stages},
                                 {R2VB_CROWD_BINDING_ODD, image, stages},

@@ -28,6 +28,7 @@ struct FrameInputs {
     uint32_t instanceCount = 0;              ///< instances uploaded this frame
     VkDescriptorBufferInfo uniforms{};       ///< shader::CrowdUniforms
     VkBufferView instances = VK_NULL_HANDLE; ///< the frame slot's instances (RGBA32UI texels)
+    VkBufferView occluders = VK_NULL_HANDLE; ///< the frame slot's horizon grid (R32F texels)
     shader::R2vbCrowdConstants constants{};  ///< pyramid and ranges; each pass sets target
 };
 

@@ -16,7 +16,7 @@ constexpr uint32_t kPushBytes = 4 * sizeof(uint32_t);
 // texels take the crowd vertices' binding and the state target the LOD
 // state's: the same data as hulldomain's storage buffers there.
 constexpr uint32_t kTexelBindings[] = {TS_BINDING_CROWD_INSTANCES, TS_BINDING_CROWD_BAKED, TS_BINDING_CROWD_CLIPS,
-                                       TS_BINDING_CROWD_SLOTS, TS_BINDING_CROWD_VERTICES};
+                                       TS_BINDING_CROWD_SLOTS, TS_BINDING_CROWD_VERTICES, TS_BINDING_CROWD_OCCLUDERS};
 
 } // namespace
 
@@ -31,7 +31,7 @@ gpu::PipelineLayout StreamoutCrowdBindings::layout(gpu::Device& device) {
 StreamoutCrowdBindings::StreamoutCrowdBindings(GpuCrowd& crowd, StreamoutCrowdResources& resources, uint32_t slot,
                                                const gpu::UniformSlice& uniforms)
     : mUniforms(uniforms.descriptor()), mTexels{crowd.instancesView(slot), crowd.bakedView(), crowd.clipsView(),
-                                                crowd.nearSlotsView(), resources.cagesView()},
+                                                crowd.nearSlotsView(), resources.cagesView(), crowd.occludersView(slot)},
       mState{VK_NULL_HANDLE, resources.stateRead().view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL} {
     mWrites[0] = bufferWrite(TS_BINDING_CROWD, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &mUniforms);
     VkWriteDescriptorSet& state = mWrites[1];

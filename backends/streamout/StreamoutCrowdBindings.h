@@ -34,7 +34,7 @@ public:
               uint32_t cageBase) const;
 
 private:
-    static constexpr size_t kTexels = 5;
+    static constexpr size_t kTexels = 6;
     VkDescriptorBufferInfo mUniforms{};
     std::array<VkBufferView, kTexels> mTexels{};
     VkDescriptorImageInfo mState{};

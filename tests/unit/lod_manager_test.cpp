@@ -282,7 +282,7 @@ TEST(LodManager, AMovingCameraNeverExceedsTheBudgetAndEveryPathAgrees) {
         std::array<uint32_t, lod::kTierCount> drawn{};
         for (const LodInstance& instance : instances) {
             uint32_t& s = gpuState[instance.id];
-            s = shader::tsLodUpdate(s, instance.sphere, f.params);
+            s = shader::tsLodUpdate(s, instance.sphere, f.params, nullptr);
             const uint32_t tier = shader::tsLodStateTier(s);
             if (tier == TS_LOD_NONE) continue;
             ++drawn[tier];

@@ -10,6 +10,7 @@
 #define TS_CROWD 1
 #define TS_CROWD_LISTS_ACCESS writeonly
 #include "crowd_common.glsl"
+#include "crowd_occluders.glsl"
 
 layout(local_size_x = 64) in;
 

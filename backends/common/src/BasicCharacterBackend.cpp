@@ -176,7 +176,14 @@ void BasicCharacterBackend::drawCrowd(backend::CrowdHandle handle, const backend
     // The counts this slot's previous frame wrote: its fence has signalled.
     reportCrowdCounts(*crowd, frame.slot, mReport);
     frame.instanceCount = crowd->uploadInstances(frame.slot, draw.instances);
-    frame.uniforms = mFrame->pushUniform(crowd->uniforms(draw, frame.instanceCount));
+    // The horizon's grid; one the buffers cannot hold, or shorter than its
+    // size says, turns occlusion off rather than read past it.
+    backend::CrowdDrawInfo checked = draw;
+    const size_t cells = size_t(draw.lod.occluder.w) * size_t(draw.lod.occluder.w);
+    if (cells != 0 &&
+        (draw.occluders.size() < cells || !crowd->uploadOccluders(frame.slot, draw.occluders.first(cells))))
+        checked.lod.occluder = glm::vec4(0.0f);
+    frame.uniforms = mFrame->pushUniform(crowd->uniforms(checked, frame.instanceCount));
     suspendMainPass();
     recordCrowdPasses(*crowd, frame);
     recordCrowdCountsCopy(mFrame->cmd(), *crowd, frame.slot);

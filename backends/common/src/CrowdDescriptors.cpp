@@ -19,12 +19,13 @@ constexpr std::pair<uint32_t, VkDescriptorType> kStorageBuffers[] = {
     {TS_BINDING_CROWD_STATE, kStorage}, {TS_BINDING_CROWD_ARGS, kStorage},  {TS_BINDING_CROWD_NEAR, kStorage},
     {TS_BINDING_CROWD_SLOTS, kStorage}};
 constexpr uint32_t kStorageTexels[] = {TS_BINDING_CROWD_BAKED, TS_BINDING_CROWD_BAKED_VERTICES,
-                                       TS_BINDING_CROWD_CLIP_MESHES};
+                                       TS_BINDING_CROWD_CLIP_MESHES, TS_BINDING_CROWD_OCCLUDERS};
 constexpr std::pair<uint32_t, VkDescriptorType> kTexelBuffers[] = {{TS_BINDING_FRAME, kUniform},
                                                                    {TS_BINDING_CROWD, kUniform}};
 constexpr uint32_t kTexelTexels[] = {
     TS_BINDING_CROWD_BAKED, TS_BINDING_CROWD_INSTANCES, TS_BINDING_CROWD_CLIPS,          TS_BINDING_CROWD_NEAR,
-    TS_BINDING_CROWD_SLOTS, TS_BINDING_CROWD_INDICES,   TS_BINDING_CROWD_BAKED_VERTICES, TS_BINDING_CROWD_CLIP_MESHES};
+    TS_BINDING_CROWD_SLOTS, TS_BINDING_CROWD_INDICES,   TS_BINDING_CROWD_BAKED_VERTICES, TS_BINDING_CROWD_CLIP_MESHES,
+    TS_BINDING_CROWD_OCCLUDERS};
 constexpr uint32_t kImageBindings[] = {TS_BINDING_BASE_COLOR, TS_BINDING_NORMAL_MAP, TS_BINDING_DISPLACEMENT};
 
 std::span<const std::pair<uint32_t, VkDescriptorType>> buffersOf(CrowdDescriptors::Mode mode) {
@@ -65,11 +66,13 @@ CrowdDescriptors::CrowdDescriptors(Mode mode, GpuCrowd& crowd, uint32_t slot, co
         mTexels[0] = crowd.bakedView();
         mTexels[1] = crowd.bakedVerticesView();
         mTexels[2] = crowd.clipMeshesView();
+        mTexels[3] = crowd.occludersView(slot);
     } else {
         mBuffers[0] = frame.descriptor();
         mBuffers[1] = uniforms.descriptor();
         mTexels = {crowd.bakedView(),     crowd.instancesView(slot), crowd.clipsView(),         crowd.nearCagesView(),
-                   crowd.nearSlotsView(), crowd.indicesView(),       crowd.bakedVerticesView(), crowd.clipMeshesView()};
+                   crowd.nearSlotsView(), crowd.indicesView(),       crowd.bakedVerticesView(), crowd.clipMeshesView(),
+                   crowd.occludersView(slot)};
     }
     const auto buffers = buffersOf(mode);
     const auto texels = texelsOf(mode);

@@ -179,6 +179,12 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
                                               storage | texels, gpu::MemoryUsage::CpuToGpu, "crowd.instances" + tag);
         crowd->mInstancesView[slot] = gpu::BufferView(device, crowd->mInstances[slot], VK_FORMAT_R32G32B32A32_UINT, 0,
                                                       whole(crowd->mInstances[slot]), "crowd.instances.texels" + tag);
+        const VkDeviceSize occluderBytes =
+            VkDeviceSize(TS_CROWD_MAX_OCCLUDER_CELLS) * TS_CROWD_MAX_OCCLUDER_CELLS * sizeof(float);
+        crowd->mOccluders[slot] = gpu::Buffer(device, occluderBytes, texels, gpu::MemoryUsage::CpuToGpu,
+                                              "crowd.occluders" + tag);
+        crowd->mOccludersView[slot] = gpu::BufferView(device, crowd->mOccluders[slot], VK_FORMAT_R32_SFLOAT, 0,
+                                                      occluderBytes, "crowd.occluders.texels" + tag);
         crowd->mArgsReadback[slot] = gpu::Buffer(device, TS_CROWD_ARG_WORDS * sizeof(uint32_t), dst,
                                                  gpu::MemoryUsage::GpuToCpu, "crowd.indirectReadback" + tag);
     }
@@ -239,6 +245,12 @@ void GpuCrowd::recordCasterArgs(VkCommandBuffer cmd) {
     vkCmdCopyBuffer(cmd, mArgs.handle(), mCasterArgs.handle(), uint32_t(counts.size()), counts.data());
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+}
+
+bool GpuCrowd::uploadOccluders(uint32_t slot, std::span<const float> occluders) {
+    if (occluders.size_bytes() > mOccluders[slot].size()) return false;
+    if (!occluders.empty()) mOccluders[slot].upload(occluders);
+    return true;
 }
 
 uint32_t GpuCrowd::uploadInstances(uint32_t slot, std::span<const shader::CrowdInstance> instances) {
@@ -305,6 +317,7 @@ uint64_t GpuCrowd::bytes() const {
                      mNearOwners.size() + mNearSlotRecords.size() + mNearCommands.size() + mPatternCodes.size() +
                      mPatternIndices.size();
     for (const gpu::Buffer& b : mInstances) total += b.size();
+    for (const gpu::Buffer& b : mOccluders) total += b.size();
     return total;
 }
 

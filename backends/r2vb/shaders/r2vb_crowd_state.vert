@@ -9,6 +9,7 @@
 #define TS_CROWD_TEXELS 1
 #define R2VB_CROWD_STATE 1
 #include "crowd_common.glsl"
+#include "crowd_occluders.glsl"
 #include "r2vb_crowd.glsl"
 
 layout(location = 0) flat out uint outState;

@@ -11,6 +11,7 @@
 #define TS_CROWD 1
 #define TS_CROWD_TEXELS 1
 #include "crowd_common.glsl"
+#include "crowd_occluders.glsl"
 #include "streamout_crowd.glsl"
 
 layout(set = 0, binding = TS_BINDING_CROWD_STATE) uniform utexture2D uState; // last frame's state per id

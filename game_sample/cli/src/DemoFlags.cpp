@@ -73,6 +73,8 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
           "character draw each (default 48)");
     count("--threads", o.threads, 0, 1024, "N", "the crowd simulation's threads (default 0: every hardware thread)");
     app.add_flag("--no-displacement{false}", o.displacement, "draw characters without their displacement maps");
+    app.add_flag("--no-horizon-culling{false}", o.horizonCulling,
+                 "draw crowd agents the terrain hides too (culled by default, docs/CROWD.md)");
     app.add_flag("--no-terrain{false}", o.terrain, "draw the characters alone on the clear colour");
     choice("--character-path", t.characterPath, {"two-pass", "single-pass"}, "P",
            "two-pass (skin the cage once into 128-bit vertices, then tessellate; default) | single-pass (skin every "

@@ -221,6 +221,7 @@ void CharacterCrowd::updateInstances(double seconds, const scene::Camera& camera
     }
     lod::LodPolicy policy = levels.lod;
     policy.fixedLevel = levels.fixedLevel.value_or(0.0f);
+    mInstanced->setHorizon(*mTerrain);
     mInstanced->select(lod::LodView::fromCamera(camera, levels.viewportHeight, levels.maxLevel), policy);
 }
 

@@ -102,16 +102,26 @@ void InstancedCrowd::set(size_t i, const shader::CrowdInstance& instance) {
     mLodInstances[i] = {instance.sphere, instance.ids.x, instance.ids.y};
 }
 
+void InstancedCrowd::setHorizon(const terrain::Terrain& terrain) {
+    mOccluderGrid = terrain.bounds().horizonGrid(TS_CROWD_MAX_OCCLUDER_CELLS, mOccluders);
+}
+
 const lod::LodFrame& InstancedCrowd::select(const lod::LodView& view, const lod::LodPolicy& policy) {
     TESSERA_CPU_SCOPE("crowd.lod");
     mLod.setPolicy(policy);
-    return mLod.update(mLodInstances, mCosts, view);
+    lod::LodView withHorizon = view;
+    if (policy.horizonCulling) {
+        withHorizon.occluders = mOccluders;
+        withHorizon.occluderGrid = mOccluderGrid;
+    }
+    return mLod.update(mLodInstances, mCosts, withHorizon);
 }
 
 backend::CrowdDrawInfo InstancedCrowd::drawInfo(bool displacement, bool lodColors) const {
     backend::CrowdDrawInfo draw;
     draw.instances = mInstances;
     draw.lod = mLod.frame().params;
+    draw.occluders = mOccluders;
     draw.displacement = displacement;
     draw.lodColors = lodColors;
     return draw;
@@ -133,6 +143,13 @@ Status InstancedCrowd::writeTiers(const std::string& path, const std::string& ba
     json.beginObject();
     json.keyValue("backend", backend);
     json.keyValue("instances", uint64_t(mInstances.size()));
+    // The reference's agents in the frustum the terrain hides, by the tier
+    // their size would have taken.
+    json.key("hiddenByTerrain");
+    json.beginObject();
+    for (uint32_t t = 0; t < lod::kTierCount; ++t)
+        json.keyValue(lod::toString(lod::Tier(t)), uint64_t(mLod.frame().hidden[t]));
+    json.endObject();
     for (const char* source : {"backend", "reference"}) {
         json.key(std::string(source) + "Tiers");
         json.beginObject();

@@ -23,6 +23,7 @@ Result<lod::LodPolicy> lodPolicyFor(const Options& options, lod::DeviceClass dev
     if (options.lodFarTriangles) policy.farMeshTriangles = *options.lodFarTriangles;
     if (options.lodMiddleTriangles) policy.middleMeshTriangles = *options.lodMiddleTriangles;
     if (options.lodFarCasterTriangles) policy.farCasterTriangles = *options.lodFarCasterTriangles;
+    policy.horizonCulling = options.horizonCulling;
     if (Status ok = policy.validate(); !ok) return ok.error();
     return policy;
 }

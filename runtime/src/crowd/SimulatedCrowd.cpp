@@ -257,6 +257,7 @@ void SimulatedCrowd::updateInstances(const scene::Camera& camera, const Characte
     });
     lod::LodPolicy policy = levels.lod;
     policy.fixedLevel = levels.fixedLevel.value_or(0.0f);
+    mInstanced->setHorizon(*mTerrain);
     mInstanced->select(lod::LodView::fromCamera(camera, levels.viewportHeight, levels.maxLevel), policy);
 }
 

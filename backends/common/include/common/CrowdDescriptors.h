@@ -45,7 +45,7 @@ public:
 
 private:
     static constexpr size_t kMaxBuffers = 10;
-    static constexpr size_t kMaxTexels = 8;
+    static constexpr size_t kMaxTexels = 9;
     static constexpr size_t kImages = 3;
     GpuCrowd& mCrowd;
     std::array<VkDescriptorBufferInfo, kMaxBuffers> mBuffers{};

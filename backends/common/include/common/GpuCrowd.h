@@ -111,6 +111,9 @@ public:
     VkBufferView nearCagesView() const { return mNearView.handle(); }
     VkBufferView nearSlotsView() const { return mNearSlotsView.handle(); }
     VkBufferView instancesView(uint32_t slot) const { return mInstancesView[slot].handle(); }
+    /// The frame slot's horizon grid (R32F texels, CrowdDrawInfo::occluders),
+    /// read by the culling passes at TS_BINDING_CROWD_OCCLUDERS.
+    VkBufferView occludersView(uint32_t slot) const { return mOccludersView[slot].handle(); }
     /// The frame slot's instance buffer (host-visible), sorted by creature.
     gpu::Buffer& instances(uint32_t slot) { return mInstances[slot]; }
     /// Where creature c's instances lie in the frame slot's buffer: first
@@ -128,6 +131,11 @@ public:
     /// into the frame slot's buffer, sorted by creature (stable), and returns
     /// how many.
     uint32_t uploadInstances(uint32_t slot, std::span<const shader::CrowdInstance> instances);
+    /// Copies the frame's horizon grid (at most TS_CROWD_MAX_OCCLUDER_CELLS
+    /// squared; CrowdDrawInfo::occluders) into the frame slot's buffer;
+    /// false, copying nothing, when it is larger (the frame's uniforms must
+    /// then turn occlusion off).
+    bool uploadOccluders(uint32_t slot, std::span<const float> occluders);
     /// Maps lists of the last uploaded frame's instance indices back to the host's.
     backend::CrowdTiers toHostIndices(backend::CrowdTiers tiers) const;
     /// The frame slot uploadInstances filled last.
@@ -159,6 +167,8 @@ private:
         mClipMeshesView;
     std::array<gpu::Buffer, gpu::kFramesInFlight> mInstances;
     std::array<gpu::BufferView, gpu::kFramesInFlight> mInstancesView;
+    std::array<gpu::Buffer, gpu::kFramesInFlight> mOccluders;
+    std::array<gpu::BufferView, gpu::kFramesInFlight> mOccludersView;
     std::array<std::vector<glm::uvec2>, gpu::kFramesInFlight> mRanges;
     std::array<std::vector<uint32_t>, gpu::kFramesInFlight> mHostIndex;
     std::array<gpu::Buffer, gpu::kFramesInFlight> mArgsReadback;

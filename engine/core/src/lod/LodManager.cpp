@@ -63,9 +63,14 @@ const LodFrame& LodManager::update(std::span<const LodInstance> instances, std::
     for (auto& tier : f.tiers) tier.clear();
     f.counts = {};
     f.inView = f.dropped = f.budgetDemoted = f.tierChanges = 0;
+    f.hidden = {};
     shader::CrowdLodParams& p = f.params;
     for (size_t i = 0; i < 6; ++i) p.planes[i] = view.frustum.planes()[i];
     p.eye = glm::vec4(view.eye, view.pixelsPerRadian);
+    const bool occlusion = view.occluderGrid.w >= 1.0f && view.occluderGrid.z > 0.0f &&
+                           view.occluders.size() >= size_t(view.occluderGrid.w) * size_t(view.occluderGrid.w);
+    p.occluder = occlusion ? view.occluderGrid : glm::vec4(0.0f);
+    mOccluders = occlusion ? view.occluders.data() : nullptr;
     p.thresholds = {mPolicy.nearPixels, mPolicy.farPixels, mPolicy.hysteresis, float(mPolicy.fadeFrames)};
     p.cuts = {0.0f, 0.0f, 0.0f, mPolicy.fadeFrames > 0 ? 1.0f : 0.0f};
     p.levels = {std::max(1.0f, view.maxLevel), mPolicy.fixedLevel, 0.0f, 0.0f};
@@ -88,12 +93,17 @@ void LodManager::classify(std::span<const LodInstance> instances) {
             const LodInstance& instance = instances[i];
             Seen& seen = mSeen[i];
             seen.tier = TS_LOD_NONE;
+            seen.hidden = TS_LOD_NONE;
             if (!shader::tsLodInFrustum(instance.sphere, p)) {
                 seen.candidate = TS_LOD_NONE;
                 continue;
             }
             seen.pixels = shader::tsLodPixels(instance.sphere, p);
             seen.candidate = shader::tsLodCandidate(seen.pixels, shader::tsLodStateTier(mState[instance.id]), p);
+            if (shader::tsLodBehindTerrain(instance.sphere, p, mOccluders)) {
+                seen.hidden = seen.candidate;
+                seen.candidate = TS_LOD_NONE;
+            }
         }
     });
 }
@@ -180,6 +190,7 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
         std::array<std::vector<LodDraw>, kTierCount> tiers;
         std::array<LodTierCount, kTierCount> counts{};
         uint32_t inView = 0, dropped = 0, demoted = 0, changes = 0;
+        std::array<uint32_t, kTierCount> hidden{};
     };
     const uint32_t count = uint32_t(instances.size());
     std::vector<Chunk> chunks((count + kGrain - 1) / kGrain);
@@ -190,8 +201,9 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
             const LodInstance& instance = instances[i];
             const Seen& seen = mSeen[i];
             const uint32_t old = mState[instance.id];
-            const uint32_t next = shader::tsLodUpdate(old, instance.sphere, p);
+            const uint32_t next = shader::tsLodUpdate(old, instance.sphere, p, mOccluders);
             mState[instance.id] = next;
+            if (seen.hidden != TS_LOD_NONE) ++chunk.hidden[seen.hidden];
             if (seen.candidate == TS_LOD_NONE) continue;
             ++chunk.inView;
             const uint32_t tier = shader::tsLodStateTier(next);
@@ -228,6 +240,7 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
             f.counts[t].triangles += chunk.counts[t].triangles;
         }
         f.inView += chunk.inView;
+        for (uint32_t t = 0; t < kTierCount; ++t) f.hidden[t] += chunk.hidden[t];
         f.dropped += chunk.dropped;
         f.budgetDemoted += chunk.demoted;
         f.tierChanges += chunk.changes;

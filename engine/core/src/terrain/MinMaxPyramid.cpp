@@ -42,6 +42,25 @@ scene::Aabb MinMaxPyramid::patchBounds(uint32_t patch) const {
     return cellBounds(0, patch % p, patch / p);
 }
 
+glm::vec4 MinMaxPyramid::horizonGrid(uint32_t maxCellsPerSide, std::vector<float>& lowest) const {
+    lowest.clear();
+    const glm::vec2 size = mGrid.patchSize();
+    if (size.x != size.y || maxCellsPerSide == 0) return glm::vec4(0.0f);
+    uint32_t level = 0;
+    while (level + 1 < levelCount() && levelSize(level) > maxCellsPerSide) ++level;
+    const uint32_t n = levelSize(level);
+    if (n > maxCellsPerSide) return glm::vec4(0.0f);
+    const uint32_t patches = mGrid.patchesPerSide();
+    lowest.resize(size_t(n) * n);
+    for (uint32_t z = 0; z < n; ++z)
+        for (uint32_t x = 0; x < n; ++x) {
+            // A cell past the last patch holds ground only over part of it.
+            const bool whole = ((x + 1) << level) <= patches && ((z + 1) << level) <= patches;
+            lowest[size_t(z) * n + x] = whole ? minMax(level, x, z).first : -1e30f;
+        }
+    return glm::vec4(0.0f, 0.0f, size.x * float(1u << level), float(n));
+}
+
 void MinMaxPyramid::update(const SampleRect& patches) {
     if (patches.empty()) return;
     const uint32_t p = mGrid.patchesPerSide();

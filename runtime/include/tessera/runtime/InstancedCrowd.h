@@ -13,6 +13,7 @@
 #include "tessera/core/Result.h"
 #include "tessera/lod/LodManager.h"
 #include "tessera/scene/Camera.h"
+#include "tessera/terrain/Terrain.h"
 
 #include <memory>
 #include <vector>
@@ -43,6 +44,11 @@ public:
     /// Runs the LOD manager over the frame's instances (the CPU reference:
     /// the budget's cuts reach the GPU in the draw's parameters).
     const lod::LodFrame& select(const lod::LodView& view, const lod::LodPolicy& policy);
+    /// The horizon the next select() and drawInfo() hide agents behind: the
+    /// terrain's lowest drawn heights (MinMaxPyramid::horizonGrid, at most
+    /// TS_CROWD_MAX_OCCLUDER_CELLS a side), taken again each frame (craters
+    /// change them).
+    void setHorizon(const terrain::Terrain& terrain);
     /// The frame's draw for the backend.
     backend::CrowdDrawInfo drawInfo(bool displacement, bool lodColors) const;
 
@@ -71,6 +77,8 @@ private:
     /// Per creature: the far tier's shadow casters' triangles over its far
     /// mesh's vertices (LodPolicy::farCasterTriangles; empty: the far mesh).
     std::vector<std::vector<uint32_t>> mFarCasterIndices;
+    std::vector<float> mOccluders;     ///< the horizon's lowest heights (setHorizon)
+    glm::vec4 mOccluderGrid{0.0f};     ///< its corner, cell side and cells per side
     lod::LodManager mLod;
     std::vector<shader::CrowdInstance> mInstances;
     std::vector<lod::LodInstance> mLodInstances;

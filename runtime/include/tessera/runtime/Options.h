@@ -164,6 +164,7 @@ struct Options {
     std::optional<float> orbitDistance;
     std::optional<float> orbitDistanceEnd; ///< --orbit-distance A:B: the dolly's end
     bool displacement = true;           ///< --no-displacement draws the bare interpolated cage
+    bool horizonCulling = true;         ///< --no-horizon-culling draws crowd agents behind the terrain too
     bool terrain = true;                ///< --no-terrain: characters alone on the clear colour (crack tests, captures)
     backend::CharacterPath characterPath = backend::CharacterPath::TwoPass; ///< --character-path
     std::optional<float> characterLevel; ///< --character-level L; unset: from each character's size on screen

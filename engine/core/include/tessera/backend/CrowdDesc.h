@@ -68,6 +68,9 @@ struct CrowdDrawInfo {
     std::span<const shader::CrowdInstance> instances;
     /// lod::LodFrame::params for this frame's view.
     shader::CrowdLodParams lod{};
+    /// The horizon's grid (lod::LodView::occluders): `lod.occluder.w`
+    /// squared lowest drawn heights, row by row; empty with no occlusion.
+    std::span<const float> occluders;
     bool displacement = true; ///< displace the near tier
     bool lodColors = false;   ///< tint by tier
 };

@@ -41,7 +41,10 @@ struct LodFrame {
     /// The CPU reference's draws per tier, in instance order.
     std::array<std::vector<LodDraw>, kTierCount> tiers;
     std::array<LodTierCount, kTierCount> counts{};
-    uint32_t inView = 0;        ///< instances whose sphere meets the frustum
+    uint32_t inView = 0;        ///< instances whose sphere meets the frustum, not behind the terrain
+    /// Instances in the frustum that the terrain hides (tsLodBehindTerrain),
+    /// by the tier their size would have taken.
+    std::array<uint32_t, kTierCount> hidden{};
     uint32_t dropped = 0;       ///< in view but beyond the far tier's budget
     uint32_t budgetDemoted = 0; ///< drawn coarser than their size asks, for the budget
     uint32_t tierChanges = 0;   ///< instances whose tier changed this frame

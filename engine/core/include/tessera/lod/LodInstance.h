@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <span>
 
 namespace tessera::lod {
 
@@ -47,6 +48,12 @@ struct LodView {
     float pixelsPerRadian = 1.0f;
     /// The backend's highest tessellation level (64 hardware, 14.99 emulated).
     float maxLevel = 64.0f;
+    /// Horizon occlusion (tsLodBehindTerrain): the lowest drawn height of each
+    /// cell of a square grid, row by row (z rows, x within), its min corner
+    /// (world x, z) and cell side in `occluderGrid` (x, y, z) and its cells
+    /// per side in w; empty (w 0): no occlusion. Must outlive the update.
+    std::span<const float> occluders;
+    glm::vec4 occluderGrid{0.0f};
 
     static LodView fromCamera(const scene::Camera& camera, uint32_t viewportHeight, float maxLevel);
 };

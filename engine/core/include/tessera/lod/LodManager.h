@@ -51,6 +51,7 @@ private:
         float pixels = 0.0f;
         uint32_t candidate = TS_LOD_NONE; ///< TS_LOD_NONE: out of view
         uint32_t tier = TS_LOD_NONE;      ///< after the budget, filled tier by tier
+        uint32_t hidden = TS_LOD_NONE;    ///< behind the terrain: the candidate it would have been
     };
 
     void classify(std::span<const LodInstance> instances);
@@ -60,6 +61,7 @@ private:
 
     LodPolicy mPolicy;
     uint32_t mThreads = 0;
+    const float* mOccluders = nullptr; ///< the current update's horizon grid (LodView::occluders), or none
     std::vector<uint32_t> mState;
     std::vector<Seen> mSeen;
     /// Triangles of one cage triangle at each odd segment count 1..63 (the

@@ -67,6 +67,9 @@ struct LodPolicy {
     /// cascade, is most of what shadows cost a crowd (docs/LOOKS.md, "The
     /// cost and auto").
     uint32_t farCasterTriangles = 96;
+    /// Instances the terrain hides from the eye are culled (tsLodBehindTerrain,
+    /// against LodView::occluders).
+    bool horizonCulling = true;
     LodBudget budget;
 
     /// The defaults for `device`: on a CPU rasterizer a handful of

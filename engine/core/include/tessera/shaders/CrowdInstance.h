@@ -67,7 +67,7 @@ struct CrowdUniforms {
     uvec4 nearPatterns[TS_EMU_TRIANGLE_CLASSES];
     uvec4 emulated; // x: instance stride of a near slot's draw (largest cage triangle count), yzw: 0
 };
-TS_CHECK_SIZE(CrowdUniforms, 1104)
+TS_CHECK_SIZE(CrowdUniforms, 1120)
 
 /// One drawn instance in a list (16 bytes).
 struct CrowdListEntry {
@@ -158,6 +158,11 @@ TS_NAMESPACE_END
 /// x = the cage's first texel, y = the far mesh's first texel.
 #define TS_BINDING_CROWD_BAKED_VERTICES 21
 #define TS_BINDING_CROWD_CLIP_MESHES 22
+/// The horizon's grid (CrowdLod.h, tsLodBehindTerrain): one R32F texel per
+/// cell, the lowest drawn height over it (crowd_occluders.glsl).
+#define TS_BINDING_CROWD_OCCLUDERS 50
+/// The most cells a side of the horizon's grid has (GpuCrowd's buffers).
+#define TS_CROWD_MAX_OCCLUDER_CELLS 128u
 
 /// The indirect buffer (uint words): per list an indexed draw command
 /// (5 words: indexCount, instanceCount, firstIndex, vertexOffset,

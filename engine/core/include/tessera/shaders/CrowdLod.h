@@ -5,7 +5,9 @@
 // same tier from the same numbers.
 //
 // Per instance and frame (tsLodUpdate):
-//   1. frustum test of the instance's bounding sphere;
+//   1. frustum test of the instance's bounding sphere, and the horizon: the
+//      terrain's lowest drawn heights between the eye and the sphere
+//      (tsLodBehindTerrain);
 //   2. its projected size in pixels (the sphere's diameter on screen);
 //   3. the tier it would take from the thresholds, with hysteresis: moving
 //      to a finer tier needs the threshold, moving back needs falling a
@@ -43,8 +45,33 @@ struct CrowdLodParams {
     vec4 thresholds; // x: near threshold (px), y: far threshold (px), z: hysteresis fraction, w: fade frames
     vec4 cuts;       // x: near cut, y: middle cut, z: far cut (px), w: 1 = budget demotions fade
     vec4 levels;     // x: level cap of the near tier, y: fixed level (0: from the size), zw: unused
+    vec4 occluder;   // the horizon's grid: xy its min corner (world x, z), z: cell side (m), w: cells per
+                     // side (0: no horizon occlusion)
 };
-TS_CHECK_SIZE(CrowdLodParams, 160)
+TS_CHECK_SIZE(CrowdLodParams, 176)
+
+// The horizon's grid, cell (i, j) the lowest height the terrain is drawn at
+// over it (the lowest sample its patch interpolates: every tessellation of
+// the patch lies at or above it). In C++ the grid is the selection's last
+// argument (nullptr: none); a GLSL shader that runs the selection defines
+// tsLodOccluderMin (crowd_occluders.glsl reads TS_BINDING_CROWD_OCCLUDERS).
+#ifdef __cplusplus
+#define TS_LOD_OCCLUDERS_PARAM , const float* occluders
+#define TS_LOD_OCCLUDERS_ARG , occluders
+#define TS_LOD_OCCLUDER_MIN(i, j, n) occluders[(j) * (n) + (i)]
+#define TS_LOD_HAS_OCCLUDERS (occluders != nullptr)
+#else
+#define TS_LOD_OCCLUDERS_PARAM
+#define TS_LOD_OCCLUDERS_ARG
+float tsLodOccluderMin(uint i, uint j, uint n);
+#define TS_LOD_OCCLUDER_MIN(i, j, n) tsLodOccluderMin(i, j, n)
+#define TS_LOD_HAS_OCCLUDERS true
+#endif
+/// Metres a sight line must pass below a cell's lowest height to count as
+/// blocked: float rounding never decides.
+#define TS_LOD_OCCLUSION_MARGIN 0.05f
+/// Most points a sight line is tested at.
+#define TS_LOD_OCCLUSION_STEPS 64u
 
 /// The state word: tier in bits 0..1, previous tier in bits 2..3, fade
 /// frames left in bits 4..9.
@@ -63,6 +90,47 @@ TS_INLINE bool tsLodInFrustum(vec4 sphere, CrowdLodParams p) {
                 p.planes[i].w < -sphere.w)
             inside = false;
     return inside;
+}
+
+/// Whether the terrain hides the sphere from the eye. The sight lines from
+/// the eye to the sphere fill a cone; at a fraction t of the way to the
+/// sphere's centre they lie within t r d / sqrt(d^2 - r^2) of the axis. If
+/// at some point short of the sphere that whole cross-section lies over the
+/// grid and below its lowest drawn height there, every sight line
+/// passes below the drawn terrain there, with the eye above it (the camera
+/// keeps its height over the drawn ground), so each meets the terrain
+/// before the sphere. The cross-section is taken by its square and the
+/// lowest of the cells the square overlaps. Points every half cell (at most
+/// TS_LOD_OCCLUSION_STEPS), from the eye.
+TS_INLINE bool tsLodBehindTerrain(vec4 sphere, CrowdLodParams p TS_LOD_OCCLUDERS_PARAM) {
+    const uint n = uint(p.occluder.w);
+    if (n == 0u || !TS_LOD_HAS_OCCLUDERS) return false;
+    const float cell = p.occluder.z;
+    const float dx = sphere.x - p.eye.x, dy = sphere.y - p.eye.y, dz = sphere.z - p.eye.z;
+    const float d = sqrt(dx * dx + dy * dy + dz * dz);
+    const float r = sphere.w;
+    if (d <= 2.0f * r + cell) return false;
+    const float spread = r / sqrt(d * d - r * r);
+    const float reach = (d - r) / d; // the sight lines meet the sphere beyond it
+    const float across = sqrt(dx * dx + dz * dz);
+    const uint steps = min(uint(across / (0.5f * cell)) + 1u, TS_LOD_OCCLUSION_STEPS);
+    for (uint s = 1u; s <= steps; ++s) {
+        const float t = reach * float(s) / float(steps + 1u);
+        const float x = p.eye.x + t * dx - p.occluder.x, z = p.eye.z + t * dz - p.occluder.y;
+        const float y = p.eye.y + t * dy;
+        const float rho = t * d * spread;
+        // The cells the cross-section's square overlaps (at most two a side
+        // while it is narrower than a cell), all inside the grid.
+        if (2.0f * rho >= cell) continue;
+        const float i0 = floor((x - rho) / cell), i1 = floor((x + rho) / cell);
+        const float j0 = floor((z - rho) / cell), j1 = floor((z + rho) / cell);
+        if (i0 < 0.0f || j0 < 0.0f || i1 >= float(n) || j1 >= float(n)) continue;
+        const uint a = uint(i0), b = uint(i1), c = uint(j0), e = uint(j1);
+        const float lowest = min(min(TS_LOD_OCCLUDER_MIN(a, c, n), TS_LOD_OCCLUDER_MIN(b, c, n)),
+                                 min(TS_LOD_OCCLUDER_MIN(a, e, n), TS_LOD_OCCLUDER_MIN(b, e, n)));
+        if (y + rho + TS_LOD_OCCLUSION_MARGIN < lowest) return true;
+    }
+    return false;
 }
 
 /// The sphere's diameter on screen in pixels (its full height when the
@@ -96,8 +164,8 @@ TS_INLINE uint tsLodTier(float pixels, uint candidate, CrowdLodParams p) {
 /// Coming into view: its tier at once (nothing on screen to fade from). A
 /// change of tier starts a fade; a demotion by the budget fades only when the
 /// budget leaves room for the fading copy (cuts.w).
-TS_INLINE uint tsLodUpdate(uint state, vec4 sphere, CrowdLodParams p) {
-    if (!tsLodInFrustum(sphere, p)) return tsLodStateNone();
+TS_INLINE uint tsLodUpdate(uint state, vec4 sphere, CrowdLodParams p TS_LOD_OCCLUDERS_PARAM) {
+    if (!tsLodInFrustum(sphere, p) || tsLodBehindTerrain(sphere, p TS_LOD_OCCLUDERS_ARG)) return tsLodStateNone();
     const uint last = tsLodStateTier(state);
     const float pixels = tsLodPixels(sphere, p);
     const uint candidate = tsLodCandidate(pixels, last, p);

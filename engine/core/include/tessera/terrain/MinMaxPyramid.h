@@ -7,6 +7,7 @@
 #include "tessera/terrain/PatchGrid.h"
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <utility>
 #include <vector>
 
@@ -31,6 +32,15 @@ public:
     scene::Aabb cellBounds(uint32_t level, uint32_t x, uint32_t z) const;
     /// World-space box of one patch (level 0).
     scene::Aabb patchBounds(uint32_t patch) const;
+
+    /// The crowd's horizon grid (lod::LodView::occluders): the lowest height
+    /// of each cell of the finest level with at most `maxCellsPerSide`
+    /// cells a side, row by row into `lowest`; a cell reaching past the
+    /// terrain's edge occludes nothing (lowest -1e30). Returns its min
+    /// corner (x, z), cell side and cells per side, as
+    /// shader::CrowdLodParams::occluder; all 0 (and `lowest` empty) where
+    /// the patches are not square.
+    glm::vec4 horizonGrid(uint32_t maxCellsPerSide, std::vector<float>& lowest) const;
 
     /// Recomputes level 0 for the patches in the inclusive patch rectangle and
     /// every level above them (after a splat changed heights there).

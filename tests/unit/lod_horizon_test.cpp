@@ -1,0 +1,126 @@
+// Horizon occlusion (tsLodBehindTerrain, CrowdLod.h): an instance is hidden
+// only where every sight line to its sphere passes below some cell's lowest
+// drawn height first, so culling it never removes a visible pixel.
+#include "tessera/lod/LodManager.h"
+#include "tessera/shaders/CrowdLod.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <vector>
+
+using namespace tessera;
+
+namespace {
+
+constexpr uint32_t kCells = 16;
+constexpr float kCell = 10.0f;
+
+struct Grid {
+    std::vector<float> lowest = std::vector<float>(kCells * kCells, 0.0f);
+    float& at(uint32_t i, uint32_t j) { return lowest[j * kCells + i]; }
+    float lowestAt(float x, float z) const {
+        const int i = int(std::floor(x / kCell)), j = int(std::floor(z / kCell));
+        if (i < 0 || j < 0 || i >= int(kCells) || j >= int(kCells)) return -1e30f;
+        return lowest[size_t(j) * kCells + size_t(i)];
+    }
+};
+
+shader::CrowdLodParams params(const glm::vec3& eye) {
+    shader::CrowdLodParams p{};
+    p.eye = glm::vec4(eye, 500.0f);
+    p.occluder = glm::vec4(0.0f, 0.0f, kCell, float(kCells));
+    return p;
+}
+
+bool hidden(const Grid& grid, const glm::vec3& eye, const glm::vec4& sphere) {
+    return shader::tsLodBehindTerrain(sphere, params(eye), grid.lowest.data());
+}
+
+/// Whether the sight line from `eye` to `target` passes below a cell's
+/// lowest height somewhere (then it meets the drawn terrain first).
+bool lineBlocked(const Grid& grid, const glm::vec3& eye, const glm::vec3& target) {
+    for (int k = 1; k < 2000; ++k) {
+        const glm::vec3 q = eye + (target - eye) * (float(k) / 2000.0f);
+        if (q.y < grid.lowestAt(q.x, q.z)) return true;
+    }
+    return false;
+}
+
+} // namespace
+
+TEST(LodHorizon, FlatGroundHidesNothing) {
+    Grid grid;
+    const glm::vec3 eye(5.0f, 1.7f, 5.0f);
+    for (float x = 20.0f; x < 160.0f; x += 13.0f)
+        EXPECT_FALSE(hidden(grid, eye, glm::vec4(x, 0.8f, 150.0f, 0.8f))) << x;
+}
+
+TEST(LodHorizon, ARidgeHidesWhatStandsLowBehindItAndNotWhatRisesAbove) {
+    Grid grid;
+    for (uint32_t i = 0; i < kCells; ++i) grid.at(i, 6) = 20.0f; // a ridge along x, 60 to 70 m in z
+    const glm::vec3 eye(80.0f, 3.0f, 15.0f);
+    EXPECT_TRUE(hidden(grid, eye, glm::vec4(80.0f, 1.0f, 120.0f, 0.8f)));
+    EXPECT_TRUE(hidden(grid, eye, glm::vec4(40.0f, 1.0f, 140.0f, 0.8f)));
+    // Above the sight line over the ridge, and in front of it.
+    EXPECT_FALSE(hidden(grid, eye, glm::vec4(80.0f, 60.0f, 120.0f, 0.8f)));
+    EXPECT_FALSE(hidden(grid, eye, glm::vec4(80.0f, 1.0f, 50.0f, 0.8f)));
+    // Without a grid nothing is hidden.
+    shader::CrowdLodParams none = params(eye);
+    none.occluder.w = 0.0f;
+    EXPECT_FALSE(shader::tsLodBehindTerrain(glm::vec4(80.0f, 1.0f, 120.0f, 0.8f), none, grid.lowest.data()));
+}
+
+// Random hills, eyes above the ground and spheres anywhere: whenever the test
+// hides a sphere, every sight line to points across it passes below a
+// cell's lowest height on the way (never a visible pixel culled); and it
+// does hide some.
+TEST(LodHorizon, HidesOnlyWhatEverySightLineLosesBehindTheTerrain) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    uint32_t hiddenCount = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        Grid grid;
+        for (float& h : grid.lowest) h = 25.0f * unit(random) * unit(random);
+        const glm::vec3 eye(kCell * kCells * unit(random), 0.0f, kCell * kCells * unit(random));
+        const glm::vec3 at(kCell * kCells * unit(random), 0.0f, kCell * kCells * unit(random));
+        const glm::vec3 eyeAbove(eye.x, std::max(grid.lowestAt(eye.x, eye.z), 0.0f) + 0.5f + 5.0f * unit(random),
+                                 eye.z);
+        const float radius = 0.3f + 2.0f * unit(random);
+        const glm::vec4 sphere(at.x, std::max(grid.lowestAt(at.x, at.z), 0.0f) + radius + 3.0f * unit(random),
+                               at.z, radius);
+        if (!hidden(grid, eyeAbove, sphere)) continue;
+        ++hiddenCount;
+        const glm::vec3 c(sphere);
+        for (int a = 0; a < 8; ++a)
+            for (int b = 0; b < 5; ++b) {
+                const float phi = 6.2831853f * float(a) / 8.0f, theta = 3.1415927f * float(b) / 4.0f;
+                const glm::vec3 onSphere =
+                    c + radius * glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+                EXPECT_TRUE(lineBlocked(grid, eyeAbove, onSphere)) << "trial " << trial;
+            }
+    }
+    std::cout << "[lod horizon] " << hiddenCount << " of 300 random spheres hidden\n";
+    EXPECT_GT(hiddenCount, 20u);
+}
+
+TEST(LodHorizon, TheManagerLeavesHiddenInstancesOutOfEveryTier) {
+    Grid grid;
+    for (uint32_t i = 0; i < kCells; ++i) grid.at(i, 6) = 20.0f;
+    // The camera looks down -z (its default) from beyond the ridge.
+    scene::Camera camera;
+    camera.setPosition({80.0f, 3.0f, 150.0f});
+    lod::LodView view = lod::LodView::fromCamera(camera, 720, 64.0f);
+    view.occluders = grid.lowest;
+    view.occluderGrid = glm::vec4(0.0f, 0.0f, kCell, float(kCells));
+    const std::vector<lod::LodInstance> instances = {{glm::vec4(80.0f, 1.0f, 120.0f, 0.8f), 0, 0},
+                                                     {glm::vec4(80.0f, 1.0f, 30.0f, 0.8f), 1, 0}};
+    const std::vector<lod::LodCharacter> characters(1);
+    lod::LodManager manager;
+    const lod::LodFrame& frame = manager.update(instances, characters, view);
+    EXPECT_NE(shader::tsLodStateTier(manager.state(0)), TS_LOD_NONE);
+    EXPECT_EQ(shader::tsLodStateTier(manager.state(1)), TS_LOD_NONE);
+    EXPECT_EQ(frame.inView, 1u);
+}
