@@ -52,7 +52,8 @@ void writeRow(JsonWriter& json, const CrowdRenderSummary& s, const CrowdRenderRo
     json.key("tiers");
     json.beginObject();
     for (int t = 0; t < 3; ++t)
-        fixedObject(json, kTierNames[t], {{"instances", r.tierInstances[t], 1}, {"triangles", r.tierTriangles[t], 0}});
+        fixedObject(json, kTierNames[t],
+                    {{"instances", r.tierInstances[t], 1}, {"triangles", r.tierTriangles[t], 0}, {"hidden", r.tierHidden[t], 1}});
     json.endObject();
     json.keyValue("crowd_bytes", r.crowdBytes);
     fixed(json, "gpu_bytes_per_agent", r.agents ? double(r.crowdBytes) / r.agents : 0.0, 1);
@@ -99,16 +100,18 @@ std::string crowdRenderBenchJson(const CrowdRenderSummary& s) {
 std::string crowdRenderBenchTable(const CrowdRenderSummary& s) {
     std::string out = format("crowd rendering, %ux%u, %u measured frames after %u, camera %s\n", s.width, s.height,
                              s.frames, s.warmupFrames, s.camera.c_str());
-    out += format("%-10s %7s | %8s %8s %8s | %7s %6s %7s %7s %7s %8s | %7s %7s %7s | %10s %10s %10s | %8s\n", "backend",
-                  "agents", "GPU ms", "CPU ms", "sim ms", "cull+bin", "skin", "near", "middle", "far", "terrain",
-                  "n near", "n mid", "n far", "tri near", "tri mid", "tri far", "B/agent");
+    out += format("%-10s %7s | %8s %8s %8s | %7s %6s %7s %7s %7s %8s | %7s %7s %7s | %10s %10s %10s | %8s | %s\n",
+                  "backend", "agents", "GPU ms", "CPU ms", "sim ms", "cull+bin", "skin", "near", "middle", "far",
+                  "terrain", "n near", "n mid", "n far", "tri near", "tri mid", "tri far", "B/agent",
+                  "hidden near/mid/far");
     for (const CrowdRenderRow& r : s.rows) {
         out += format("%-10s %7u | %8.3f %8.3f %8.3f | %7.3f %6.3f %7.3f %7.3f %7.3f %8.3f | %7.0f %7.0f %7.0f | "
-                      "%10.0f %10.0f %10.0f | %8.1f\n",
+                      "%10.0f %10.0f %10.0f | %8.1f | %.0f/%.0f/%.0f\n",
                       r.backend.c_str(), r.agents, r.gpuFrame.median, r.cpuFrame.median, r.simulation.median,
                       r.cullBinMs, r.skinMs, r.tierMs[0], r.tierMs[1], r.tierMs[2], r.terrainMs, r.tierInstances[0],
                       r.tierInstances[1], r.tierInstances[2], r.tierTriangles[0], r.tierTriangles[1],
-                      r.tierTriangles[2], r.agents ? double(r.crowdBytes) / r.agents : 0.0);
+                      r.tierTriangles[2], r.agents ? double(r.crowdBytes) / r.agents : 0.0, r.tierHidden[0],
+                      r.tierHidden[1], r.tierHidden[2]);
         if (!r.suspectPasses.empty()) {
             std::string names;
             for (const std::string& n : r.suspectPasses) names += (names.empty() ? "" : ", ") + n;

@@ -35,6 +35,9 @@ struct CrowdRenderRow {
     /// invocations: after tessellation), medians.
     std::array<double, 3> tierInstances{};
     std::array<double, 3> tierTriangles{};
+    /// Per tier: agents in the frustum the terrain hid (horizon culling, the
+    /// CPU reference's counts, by the tier their size would have taken).
+    std::array<double, 3> tierHidden{};
     uint64_t crowdBytes = 0; ///< device memory of the crowd (FrameReport::crowdBytes)
     /// GPU passes whose timestamps cannot be trusted against the frame
     /// (lavapipe misses the rasterisation of some passes): named, not charted.

@@ -184,7 +184,16 @@ void SceneRun::renderFrame(uint32_t frame, bool readback) {
         characters->update(frame * World::kSecondsPerFrame, mCamera,
                            {session.height(), session.maxCharacterLevel(), mOptions.characterLevel, mLodPolicy});
         draw = {characters->items(), mOptions.characterPath, mOptions.displacement, mOptions.lodColors};
-        if (mInstanced) crowdDraw = mInstanced->drawInfo(mOptions.displacement, mOptions.lodColors);
+        if (mInstanced) {
+            crowdDraw = mInstanced->drawInfo(mOptions.displacement, mOptions.lodColors);
+            // The agents the terrain hid this frame, by the tier their size
+            // would have taken (the CPU reference's; every backend culls the same).
+            static const char* const kHidden[3] = {"crowd near hidden", "crowd middle hidden", "crowd far hidden"};
+            auto& profiler = profiler::Profiler::global();
+            for (int t = 0; t < 3; ++t)
+                profiler.recordCounter({kHidden[t], uint64_t(frame), profiler.nowNs(),
+                                        double(mInstanced->lod().hidden[size_t(t)])});
+        }
     }
     std::span<const SubdivDraw> surfaceDraws;
     const uint64_t budget = mOptions.subdiv.budget.value_or(
