@@ -17,6 +17,7 @@
 namespace tessera::character {
 struct BakedAnimation;
 struct CageMesh;
+struct ImpostorAtlas;
 } // namespace tessera::character
 
 namespace tessera::backend {
@@ -44,6 +45,10 @@ struct CrowdCharacterDesc {
     /// farCasterTriangles); empty: the far mesh's own. Must outlive
     /// createCrowd only.
     std::span<const uint32_t> farCasterIndices;
+    /// The impostor tier's images (character::bakeImpostors; one layer per
+    /// clip of this creature and baked phase, in the clips' order within
+    /// `CrowdDesc::animation`). Required. Must outlive createCrowd only.
+    const character::ImpostorAtlas* impostor = nullptr;
     /// Near-tier levels per projected pixel (lod::LodCharacter::levelPerPixel).
     float levelPerPixel = 0.01f;
 };

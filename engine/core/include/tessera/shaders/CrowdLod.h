@@ -29,9 +29,10 @@
 #define TS_LOD_NEAR 0u   ///< tessellated and displaced (the two-pass path)
 #define TS_LOD_MIDDLE 1u ///< the cage, untessellated, with the normal map
 #define TS_LOD_FAR 2u    ///< the simplified far mesh
-#define TS_LOD_TIERS 3u
+#define TS_LOD_IMPOSTOR 3u ///< one card per creature from its baked views (CrowdImpostor.h)
+#define TS_LOD_TIERS 4u
 /// State tier of an instance that was not in view last frame.
-#define TS_LOD_NONE 3u
+#define TS_LOD_NONE 4u
 
 /// Most frames a cross-fade may last (the fade counter has 6 bits).
 #define TS_LOD_MAX_FADE_FRAMES 63u
@@ -73,12 +74,12 @@ float tsLodOccluderMin(uint i, uint j, uint n);
 /// Most points a sight line is tested at.
 #define TS_LOD_OCCLUSION_STEPS 64u
 
-/// The state word: tier in bits 0..1, previous tier in bits 2..3, fade
-/// frames left in bits 4..9.
-TS_INLINE uint tsLodStateTier(uint state) { return state & 3u; }
-TS_INLINE uint tsLodStatePrevious(uint state) { return (state >> 2u) & 3u; }
-TS_INLINE uint tsLodStateFade(uint state) { return (state >> 4u) & 63u; }
-TS_INLINE uint tsLodState(uint tier, uint previous, uint fade) { return tier | (previous << 2u) | (fade << 4u); }
+/// The state word: tier in bits 0..2, previous tier in bits 3..5, fade
+/// frames left in bits 6..11.
+TS_INLINE uint tsLodStateTier(uint state) { return state & 7u; }
+TS_INLINE uint tsLodStatePrevious(uint state) { return (state >> 3u) & 7u; }
+TS_INLINE uint tsLodStateFade(uint state) { return (state >> 6u) & 63u; }
+TS_INLINE uint tsLodState(uint tier, uint previous, uint fade) { return tier | (previous << 3u) | (fade << 6u); }
 /// The state of an instance never seen (or out of view last frame).
 TS_INLINE uint tsLodStateNone() { return tsLodState(TS_LOD_NONE, TS_LOD_NONE, 0u); }
 
