@@ -3,6 +3,8 @@
 #include "tessera/gpu/Device.h"
 
 #include "character.frag_crowd.spv.h"
+#include "crowd_impostor.frag.spv.h"
+#include "crowd_impostor.vert.spv.h"
 #include "crowd_mesh.vert.spv.h"
 #include "crowd_mesh.vert_shadow.spv.h"
 #include "hulldomain_character_patch.tesc_crowd.spv.h"
@@ -57,6 +59,8 @@ HulldomainCrowdPass::HulldomainCrowdPass(gpu::Device& device, VkFormat colorForm
                    {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, hulldomain_character_patch_tese_crowd_shadow_spv}});
     mMesh = CrowdMeshPass(device, Mode::Storage, crowd_mesh_vert_spv, character_frag_crowd_spv, colorFormat, depthFormat,
                           "hulldomain.crowd.mesh", crowd_mesh_vert_shadow_spv);
+    mImpostor = CrowdImpostorPass(device, Mode::Storage, crowd_impostor_vert_spv, crowd_impostor_frag_spv, colorFormat,
+                                  depthFormat, "hulldomain.crowd.impostor");
 }
 
 void HulldomainCrowdPass::recordCompute(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
@@ -72,12 +76,14 @@ void HulldomainCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
         drawNear(cmd, mLayout, crowd, descriptors);
     }
     mMesh.record(frame, crowd, descriptors);
+    mImpostor.record(frame, crowd, descriptors);
 }
 
 void HulldomainCrowdPass::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
                                        const shader::ShadowCasterPush& caster) {
     mNearShadow.bind(frame.cmd(), caster);
     drawNear(frame.cmd(), mNearShadow.layout(), crowd, descriptors);
+    // The impostor tier casts none (CrowdImpostorPass.h).
     mMesh.recordShadow(frame, crowd, descriptors, caster);
 }
 

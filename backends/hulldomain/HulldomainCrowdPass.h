@@ -5,11 +5,13 @@
 /// tier lists, whose counts are the indirect draws' instance counts, and
 /// skin the near tier's cages into compressed vertices; then per creature
 /// an indirect tessellated draw (near), an indirect draw of the cage
-/// (middle) and of the far mesh (far), skinned from the baked clips.
-/// Cascaded shadows: the same draws as casters, depth only.
+/// (middle) and of the far mesh (far), skinned from the baked clips, and of
+/// the card (impostor, CrowdImpostorPass). Cascaded shadows: the same draws
+/// as casters, depth only, but the cards'.
 
 #include "common/ComputeCrowdCullPass.h"
 #include "common/CrowdDescriptors.h"
+#include "common/CrowdImpostorPass.h"
 #include "common/CrowdMeshPass.h"
 #include "common/GpuCrowd.h"
 #include "common/ShadowCasterPipeline.h"
@@ -29,7 +31,8 @@ public:
     /// commands' copy for the frame report is BasicCharacterBackend's.
     void recordCompute(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,
                        uint32_t instanceCount);
-    /// Inside the main pass: each tier's draws (crowd.near, crowd.middle, crowd.far).
+    /// Inside the main pass: each tier's draws (crowd.near, crowd.middle,
+    /// crowd.far, crowd.impostor).
     void recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors);
     /// Outside the main pass: every tier's draws as casters into the open
     /// shadow layer of the cascade `caster`.
@@ -48,6 +51,7 @@ private:
     gpu::Pipeline mNear;
     ShadowCasterPipeline mNearShadow;
     CrowdMeshPass mMesh;
+    CrowdImpostorPass mImpostor;
 };
 
 } // namespace tessera::backends

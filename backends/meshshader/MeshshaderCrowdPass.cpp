@@ -103,6 +103,7 @@ MeshshaderCrowdPass::MeshshaderCrowdPass(gpu::Device& device, VkFormat colorForm
         {{VK_SHADER_STAGE_TASK_BIT_EXT, meshshader_crowd_meshlet_task_shadow_spv},
          {VK_SHADER_STAGE_MESH_BIT_EXT, meshshader_crowd_meshlet_mesh_shadow_spv}},
         sizeof(TaskPush));
+    mImpostor = MeshshaderCrowdImpostorPass(device, colorFormat, depthFormat);
 }
 
 void MeshshaderCrowdPass::recordCommands(VkCommandBuffer cmd, GpuCrowd& crowd, MeshshaderCrowdResources& resources) {
@@ -126,20 +127,22 @@ void MeshshaderCrowdPass::recordCompute(gpu::FrameContext& frame, GpuCrowd& crow
 
 void MeshshaderCrowdPass::recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd,
                                       MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors) {
-    static const char* const kPassNames[TS_LOD_TIERS] = {"crowd.near", "crowd.middle", "crowd.far"};
+    static const char* const kPassNames[] = {"crowd.near", "crowd.middle", "crowd.far"};
     for (uint32_t tier = TS_LOD_NEAR; tier <= TS_LOD_FAR; ++tier) {
         gpu::PassScope pass(frame, kPassNames[tier]);
         vkCmdBindPipeline(frame.cmd(), VK_PIPELINE_BIND_POINT_GRAPHICS,
                           tier == TS_LOD_NEAR ? mNear.handle() : mMeshlets.handle());
         drawTier(frame.cmd(), mLayout, VK_SHADER_STAGE_TASK_BIT_EXT, tier, crowd, resources, descriptors, false);
     }
+    mImpostor.record(frame, crowd, resources, descriptors);
 }
 
 void MeshshaderCrowdPass::recordShadow(gpu::FrameContext& frame, GpuCrowd& crowd,
                                        MeshshaderCrowdResources& resources, CrowdDescriptors& descriptors,
                                        const shader::ShadowCasterPush& caster) {
     // The middle and far tiers cast the far mesh's simplified casters'
-    // meshlets (docs/LOOKS.md, "The casters"); the near tier its own.
+    // meshlets (docs/LOOKS.md, "The casters"); the near tier its own; the
+    // impostor tier none (CrowdImpostorPass.h).
     for (uint32_t tier = TS_LOD_NEAR; tier <= TS_LOD_FAR; ++tier) {
         const ShadowCasterPipeline& shadow = tier == TS_LOD_NEAR ? mNearShadow : mMeshletsShadow;
         shadow.bind(frame.cmd(), caster);

@@ -8,11 +8,13 @@
 /// mesh-task draw: the near tier through the character task and mesh
 /// shaders in their crowd variant (each instance tessellated at its own
 /// level, as hulldomain's hull stage selects it), the middle and far tiers
-/// as meshlets culled per instance in the task stage.
+/// as meshlets culled per instance in the task stage, the impostor tier as
+/// cards from a mesh stage alone (MeshshaderCrowdImpostorPass).
 
 #include "common/ComputeCrowdCullPass.h"
 #include "common/CrowdDescriptors.h"
 #include "common/GpuCrowd.h"
+#include "MeshshaderCrowdImpostorPass.h"
 #include "MeshshaderCrowdResources.h"
 #include "common/ShadowCasterPipeline.h"
 #include "MeshshaderPatternTables.h"
@@ -32,7 +34,8 @@ public:
     /// included) and skins the near slots (crowd.skin).
     void recordCompute(gpu::FrameContext& frame, GpuCrowd& crowd, MeshshaderCrowdResources& resources,
                        CrowdDescriptors& descriptors, uint32_t instanceCount);
-    /// Inside the main pass: each tier's draws (crowd.near, crowd.middle, crowd.far).
+    /// Inside the main pass: each tier's draws (crowd.near, crowd.middle,
+    /// crowd.far, crowd.impostor).
     void recordDraws(gpu::FrameContext& frame, GpuCrowd& crowd, MeshshaderCrowdResources& resources,
                      CrowdDescriptors& descriptors);
     /// Outside the main pass: every tier's draws as casters into the open
@@ -64,6 +67,7 @@ private:
     ShadowCasterPipeline mNearShadow;
     ShadowCasterPipeline mMeshletsShadow;
     MeshshaderPatternTables mTables;
+    MeshshaderCrowdImpostorPass mImpostor;
 };
 
 } // namespace tessera::backends

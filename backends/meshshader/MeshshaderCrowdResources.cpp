@@ -174,8 +174,9 @@ Result<std::unique_ptr<MeshshaderCrowdResources>> MeshshaderCrowdResources::crea
     r->mConed = tables.coned;
 
     // The commands' fourth word is fixed: near lists take a workgroup per
-    // 32 cage triangles per instance, the others' items are their mesh's
-    // meshlets per instance (tsCrowdMeshletCommand).
+    // 32 cage triangles per instance, the middle and far lists' items are
+    // their mesh's meshlets per instance (tsCrowdMeshletCommand); the
+    // impostor lists' cards need none (tsCrowdImpostorCommand).
     std::vector<shader::CrowdMeshCommand> args(TS_CROWD_MESH_COMMANDS, shader::CrowdMeshCommand{glm::uvec4(0)});
     for (uint32_t c = 0; c < crowd.creatures().size(); ++c) {
         args[TS_LOD_NEAR * TS_CROWD_MAX_CHARACTERS + c].groups.w = groupsOf(crowd.creatures()[c].cageTriangles);

@@ -28,9 +28,10 @@ backend::CrowdTierCounts NullCrowd::draw(const backend::CrowdDrawInfo& draw) {
             ++counts.instances[t];
             // Before tessellation, as the GPU backends count them (the near
             // tier's cage; tessellation's output is the pass's statistics).
-            counts.triangles[t] += t == TS_LOD_FAR      ? creature.farTriangles
-                                   : t == TS_LOD_MIDDLE ? creature.middleTriangles
-                                                        : creature.cageTriangles;
+            counts.triangles[t] += t == TS_LOD_IMPOSTOR ? TS_CROWD_IMPOSTOR_INDICES / 3
+                                   : t == TS_LOD_FAR      ? creature.farTriangles
+                                   : t == TS_LOD_MIDDLE   ? creature.middleTriangles
+                                                          : creature.cageTriangles;
         };
         add(tier);
         if (shader::tsLodStateFade(state) > 0u) add(shader::tsLodStatePrevious(state));

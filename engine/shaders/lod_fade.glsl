@@ -25,9 +25,12 @@ bool tsLodKeepPixel(vec2 fragCoord, float coverage, bool fadingOut) {
     return fadingOut ? t >= 1.0 - coverage : t < coverage;
 }
 
-// --lod-colors: near green, middle yellow, far red.
+// --lod-colors: near green, middle yellow, far red, impostor blue.
 vec3 tsLodTierTint(uint tier) {
-    return tier == TS_LOD_NEAR ? vec3(0.25, 0.9, 0.3) : tier == TS_LOD_MIDDLE ? vec3(0.95, 0.85, 0.2) : vec3(0.95, 0.3, 0.25);
+    if (tier == TS_LOD_NEAR) return vec3(0.25, 0.9, 0.3);
+    if (tier == TS_LOD_MIDDLE) return vec3(0.95, 0.85, 0.2);
+    if (tier == TS_LOD_FAR) return vec3(0.95, 0.3, 0.25);
+    return vec3(0.3, 0.5, 0.95);
 }
 
 #endif

@@ -26,7 +26,9 @@ constexpr uint32_t kTexelTexels[] = {
     TS_BINDING_CROWD_BAKED, TS_BINDING_CROWD_INSTANCES, TS_BINDING_CROWD_CLIPS,          TS_BINDING_CROWD_NEAR,
     TS_BINDING_CROWD_SLOTS, TS_BINDING_CROWD_INDICES,   TS_BINDING_CROWD_BAKED_VERTICES, TS_BINDING_CROWD_CLIP_MESHES,
     TS_BINDING_CROWD_OCCLUDERS};
-constexpr uint32_t kImageBindings[] = {TS_BINDING_BASE_COLOR, TS_BINDING_NORMAL_MAP, TS_BINDING_DISPLACEMENT};
+// The creature's maps, then the crowd's impostor atlases.
+constexpr uint32_t kImageBindings[] = {TS_BINDING_BASE_COLOR, TS_BINDING_NORMAL_MAP, TS_BINDING_DISPLACEMENT,
+                                       TS_BINDING_CROWD_IMPOSTOR_ALBEDO, TS_BINDING_CROWD_IMPOSTOR_NORMAL};
 
 std::span<const std::pair<uint32_t, VkDescriptorType>> buffersOf(CrowdDescriptors::Mode mode) {
     if (mode == CrowdDescriptors::Mode::Storage) return kStorageBuffers;
@@ -89,7 +91,8 @@ std::span<const VkWriteDescriptorSet> CrowdDescriptors::writes(uint32_t creature
     const VkImageLayout read = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     mImages = {VkDescriptorImageInfo{c.sampler().handle(), c.baseColor().view(), read},
                VkDescriptorImageInfo{c.sampler().handle(), c.normalMap().view(), read},
-               VkDescriptorImageInfo{c.sampler().handle(), c.displacementMap().view(), read}};
+               VkDescriptorImageInfo{c.sampler().handle(), c.displacementMap().view(), read},
+               mCrowd.impostors().albedo(), mCrowd.impostors().normal()};
     return mWrites;
 }
 

@@ -15,7 +15,7 @@ CrowdMeshPass::CrowdMeshPass(gpu::Device& device, CrowdDescriptors::Mode mode, s
                              const std::string& name, std::span<const uint32_t> casterVertex)
     : mPipeline(device, mode, vertex, fragment,
                 {sizeof(shader::CrowdListEntry), VK_VERTEX_INPUT_RATE_INSTANCE, VK_FORMAT_R32G32B32A32_UINT},
-                VK_FRONT_FACE_COUNTER_CLOCKWISE, colorFormat, depthFormat, name, casterVertex) {}
+                VK_FRONT_FACE_COUNTER_CLOCKWISE, VK_CULL_MODE_BACK_BIT, colorFormat, depthFormat, name, casterVertex) {}
 
 namespace {
 

@@ -6,8 +6,8 @@ namespace tessera::backends {
 
 CrowdPipeline::CrowdPipeline(gpu::Device& device, CrowdDescriptors::Mode mode, std::span<const uint32_t> vertex,
                              std::span<const uint32_t> fragment, Stream stream, VkFrontFace frontFace,
-                             VkFormat colorFormat, VkFormat depthFormat, const std::string& name,
-                             std::span<const uint32_t> casterVertex)
+                             VkCullModeFlags cullMode, VkFormat colorFormat, VkFormat depthFormat,
+                             const std::string& name, std::span<const uint32_t> casterVertex)
     : mDevice(&device), mLayout(CrowdDescriptors::layout(device, mode,
                                                          VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
                                                          name + ".layout")) {
@@ -17,7 +17,7 @@ CrowdPipeline::CrowdPipeline(gpu::Device& device, CrowdDescriptors::Mode mode, s
     desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vertex}, {VK_SHADER_STAGE_FRAGMENT_BIT, fragment}};
     desc.vertexBindings = {{0, stream.stride, stream.rate}};
     desc.vertexAttributes = {{0, 0, stream.format, 0}};
-    desc.cullMode = VK_CULL_MODE_BACK_BIT;
+    desc.cullMode = cullMode;
     desc.frontFace = frontFace;
     desc.colorFormats = {colorFormat};
     desc.depthFormat = depthFormat;

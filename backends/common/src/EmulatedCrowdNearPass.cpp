@@ -13,7 +13,8 @@ EmulatedCrowdNearPass::EmulatedCrowdNearPass(gpu::Device& device, VkFormat color
                                              const std::string& backendName)
     : mPipeline(device, CrowdDescriptors::Mode::Texels, crowd_near_emulated_vert_spv, character_frag_crowd_texels_spv,
                 {sizeof(uint32_t), VK_VERTEX_INPUT_RATE_VERTEX, VK_FORMAT_R32_UINT}, VK_FRONT_FACE_CLOCKWISE,
-                colorFormat, depthFormat, backendName + ".crowd.near", crowd_near_emulated_vert_shadow_spv) {}
+                VK_CULL_MODE_BACK_BIT, colorFormat, depthFormat, backendName + ".crowd.near",
+                crowd_near_emulated_vert_shadow_spv) {}
 
 namespace {
 

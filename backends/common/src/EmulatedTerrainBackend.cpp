@@ -10,6 +10,8 @@
 #include "tessera/tessellator/PatternLibrary.h"
 
 #include "character.frag_crowd_texels.spv.h"
+#include "crowd_impostor.frag_texels.spv.h"
+#include "crowd_impostor.vert_texels.spv.h"
 #include "crowd_mesh.vert_texels.spv.h"
 #include "crowd_mesh.vert_texels_shadow.spv.h"
 #include "terrain_basic.frag.spv.h"
@@ -62,6 +64,8 @@ Status EmulatedTerrainBackend::initializeTechnique(const backend::BackendInitInf
                                    character_frag_crowd_texels_spv, color, depth, name + ".crowd.mesh",
                                    crowd_mesh_vert_texels_shadow_spv);
         mCrowdNear = EmulatedCrowdNearPass(*mDevice, color, depth, name);
+        mCrowdImpostor = CrowdImpostorPass(*mDevice, CrowdDescriptors::Mode::Texels, crowd_impostor_vert_texels_spv,
+                                           crowd_impostor_frag_texels_spv, color, depth, name + ".crowd.impostor");
     }
     return {};
 }
@@ -70,6 +74,7 @@ void EmulatedTerrainBackend::shutdownTechnique() {
     shutdownFactorPasses();
     mCrowdNear = {};
     mCrowdMesh = {};
+    mCrowdImpostor = {};
     mSubdivPass = {};
     mSubdivSource = {};
     mCharacterPass = {};
@@ -120,12 +125,14 @@ void EmulatedTerrainBackend::recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame&
                                  mShadowMaps.writes());
     mCrowdNear.record(*mFrame, crowd, descriptors);
     mCrowdMesh.record(*mFrame, crowd, descriptors);
+    mCrowdImpostor.record(*mFrame, crowd, descriptors);
 }
 
 void EmulatedTerrainBackend::recordCrowdShadow(GpuCrowd& crowd, const CrowdFrame& frame,
                                                const shader::ShadowCasterPush& caster) {
     CrowdDescriptors descriptors(CrowdDescriptors::Mode::Texels, crowd, frame.slot, mFrameUniforms, frame.uniforms,
                                  mShadowMaps.writes());
+    // The impostor tier casts none (CrowdImpostorPass.h).
     mCrowdNear.recordShadow(*mFrame, crowd, descriptors, caster);
     mCrowdMesh.recordShadow(*mFrame, crowd, descriptors, caster);
 }

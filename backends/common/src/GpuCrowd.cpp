@@ -81,6 +81,12 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
         crowd->mTriangleStride = std::max(crowd->mTriangleStride, creature.cageTriangles);
     }
 
+    // The impostor tier's card, one for every creature (its corners are
+    // placed by crowd_impostor.glsl).
+    const uint32_t impostorFirstIndex = uint32_t(indices.size());
+    for (uint32_t i = 0; i < TS_CROWD_IMPOSTOR_INDICES; ++i) indices.push_back(shader::tsCrowdImpostorIndex(i));
+    for (Creature& creature : crowd->mCreatures) creature.impostorFirstIndex = impostorFirstIndex;
+
     // The middle and far tiers' baked vertex animation: each creature's
     // cage and far mesh skinned at every baked frame of its clips, packed
     // with its character's box and uv range (the GPU unpacks with them).
@@ -163,6 +169,7 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
     crowd->mClipMeshes.upload(std::span<const glm::uvec4>(clipMeshes));
     crowd->mClipMeshesView = gpu::BufferView(device, crowd->mClipMeshes, VK_FORMAT_R32G32B32A32_UINT, 0,
                                              whole(crowd->mClipMeshes), "crowd.clipMeshes.texels");
+    crowd->mImpostors = GpuImpostorAtlas::create(device, desc);
     const tessellator::TrianglePatternLibrary& patterns = tessellator::TrianglePatternLibrary::fractionalOdd();
     crowd->mPatternCodes =
         gpu::Buffer(device, patterns.codes().size_bytes(), vertex, gpu::MemoryUsage::GpuOnly, "crowd.nearPatternCodes");
@@ -190,7 +197,8 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
     }
 
     // Each list draws its creature's mesh: the cage (near), its middle
-    // triangles (the cage's or fewer, over the same vertices) or the far mesh; firstInstance is the list's region, so the instance stream
+    // triangles (the cage's or fewer, over the same vertices), the far mesh
+    // or the card (impostor); firstInstance is the list's region, so the instance stream
     // (or gl_InstanceIndex) is the entry. Indices stay local to the mesh
     // (vertexOffset 0): every tier fetches its vertices by local index, the
     // near tier from its compressed cage, the others from the baked vertex
@@ -315,7 +323,7 @@ uint64_t GpuCrowd::bytes() const {
     uint64_t total = mVertices.size() + mIndices.size() + mBaked.size() + mClips.size() + mState.size() +
                      mBakedVertices.size() + mClipMeshes.size() + mLists.size() + mArgs.size() + mCasterArgs.size() + mNear.size() +
                      mNearOwners.size() + mNearSlotRecords.size() + mNearCommands.size() + mPatternCodes.size() +
-                     mPatternIndices.size();
+                     mPatternIndices.size() + mImpostors.bytes();
     for (const gpu::Buffer& b : mInstances) total += b.size();
     for (const gpu::Buffer& b : mOccluders) total += b.size();
     return total;

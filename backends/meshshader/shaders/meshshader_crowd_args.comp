@@ -23,6 +23,11 @@ void main() {
     uint list = command < TS_CROWD_LISTS ? command : TS_LOD_MIDDLE * TS_CROWD_MAX_CHARACTERS + (command - TS_CROWD_LISTS);
     uint count = crowdArgs[list * TS_CROWD_ARG_DRAW_WORDS + 1u];
     uint w = meshArgs[command].groups.w;
-    meshArgs[command].groups = list < TS_CROWD_MAX_CHARACTERS ? tsCrowdMeshCommand(count, w)
-                                                              : tsCrowdMeshletCommand(count, w);
+    uint tier = list / TS_CROWD_MAX_CHARACTERS;
+    if (tier == TS_LOD_NEAR)
+        meshArgs[command].groups = tsCrowdMeshCommand(count, w);
+    else if (tier == TS_LOD_IMPOSTOR)
+        meshArgs[command].groups = tsCrowdImpostorCommand(count); // cards, no task stage
+    else
+        meshArgs[command].groups = tsCrowdMeshletCommand(count, w);
 }

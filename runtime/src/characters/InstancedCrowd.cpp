@@ -76,7 +76,7 @@ backend::CrowdDesc InstancedCrowd::desc(const CharacterAssets& assets, uint32_t 
         mCosts.push_back(cost);
         mCharacters.push_back(
             {assets.handle(i), &asset.asset.cage, mFarMeshes[i], mMiddleIndices[i], mFarCasterIndices[i],
-             cost.levelPerPixel});
+             /* impostor: the baker's atlas, once it is loaded */ nullptr, cost.levelPerPixel});
     }
     const uint32_t nearSlots = policy.budget.maxNearInstances;
     backend::CrowdDesc desc;

@@ -7,7 +7,9 @@
 /// compute passes and draws) and `Texels` (the emulated backends' draws:
 /// instances, clips, near cages, near slot records and indices as texel
 /// buffers, as D3D9 vertex texture fetch and D3D10 Buffer.Load read them).
-/// Both end with the cascaded shadow maps' two bindings (ShadowCascades.h).
+/// Both bind a creature's maps and the crowd's impostor atlases
+/// (GpuImpostorAtlas), and end with the cascaded shadow maps' two bindings
+/// (ShadowCascades.h).
 
 #include "common/GpuCrowd.h"
 #include "tessera/gpu/FrameContext.h"
@@ -46,7 +48,7 @@ public:
 private:
     static constexpr size_t kMaxBuffers = 10;
     static constexpr size_t kMaxTexels = 9;
-    static constexpr size_t kImages = 3;
+    static constexpr size_t kImages = 5;
     GpuCrowd& mCrowd;
     std::array<VkDescriptorBufferInfo, kMaxBuffers> mBuffers{};
     std::array<VkBufferView, kMaxTexels> mTexels{};

@@ -1,9 +1,9 @@
 #pragma once
 /// @file CrowdPipeline.h
 /// What the crowd's shared tier draws (CrowdMeshPass, EmulatedCrowdNearPass)
-/// are built from: a graphics pipeline over a CrowdDescriptors layout, with
-/// a vertex and a fragment stage, one vertex stream of one attribute and
-/// back faces culled, and its recording: the pipeline, the stream and the
+/// (and CrowdImpostorPass) are built from: a graphics pipeline over a
+/// CrowdDescriptors layout, with a vertex and a fragment stage, one vertex
+/// stream of one attribute and the faces it culls, and its recording: the pipeline, the stream and the
 /// index buffer bound once, then per creature its descriptors pushed before
 /// its indirect draws. Given its vertex stage's caster variant, also the
 /// depth-only draws of cascaded shadows (ShadowCasterPipeline).
@@ -37,8 +37,9 @@ public:
     /// `mode`; with `casterVertex` (the vertex stage's TS_SHADOW_CASTER
     /// variant) also the depth-only caster pipeline.
     CrowdPipeline(gpu::Device& device, CrowdDescriptors::Mode mode, std::span<const uint32_t> vertex,
-                  std::span<const uint32_t> fragment, Stream stream, VkFrontFace frontFace, VkFormat colorFormat,
-                  VkFormat depthFormat, const std::string& name, std::span<const uint32_t> casterVertex = {});
+                  std::span<const uint32_t> fragment, Stream stream, VkFrontFace frontFace, VkCullModeFlags cullMode,
+                  VkFormat colorFormat, VkFormat depthFormat, const std::string& name,
+                  std::span<const uint32_t> casterVertex = {});
 
     /// Records GPU pass `passName`: binds the pipeline, `stream` and
     /// `indices` (uint32), then for each creature pushes its descriptors and

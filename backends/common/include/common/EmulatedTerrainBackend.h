@@ -13,6 +13,7 @@
 
 #include "common/FillWirePipelines.h"
 #include "common/BasicCharacterBackend.h"
+#include "common/CrowdImpostorPass.h"
 #include "common/CrowdMeshPass.h"
 #include "common/EmulatedCharacterPass.h"
 #include "common/EmulatedCrowdNearPass.h"
@@ -85,8 +86,9 @@ protected:
     /// (tsCrowdNearCommand) and the slots' compressed cages; the tiers are
     /// then drawn the same way on both emulated backends: the near tier
     /// through the triangle patterns (EmulatedCrowdNearPass), the middle and
-    /// far tiers from the baked clips (CrowdMeshPass), reading the crowd as
-    /// texel buffers (CrowdDescriptors::Mode::Texels).
+    /// far tiers from the baked clips (CrowdMeshPass), the impostor tier as
+    /// cards (CrowdImpostorPass), reading the crowd as texel buffers
+    /// (CrowdDescriptors::Mode::Texels).
     void recordCrowdDraws(GpuCrowd& crowd, const CrowdFrame& frame) final;
     /// Cascaded shadows: the same tiers' draws as casters, depth only, their
     /// evaluation and mesh vertex shaders' TS_SHADOW_CASTER variants (no
@@ -110,6 +112,7 @@ private:
     EmulatedDrawSource mSubdivSource; ///< the last recordSubdivPasses' output
     EmulatedCrowdNearPass mCrowdNear;
     CrowdMeshPass mCrowdMesh;
+    CrowdImpostorPass mCrowdImpostor;
 };
 
 } // namespace tessera::backends

@@ -2,8 +2,9 @@
 /// @file GpuCrowd.h
 /// An instanced crowd's GPU resources, shared by every backend's crowd
 /// (layouts in CrowdInstance.h): every creature's cage and far mesh in one
-/// vertex and one index buffer, the baked clips, the tier lists (instance
-/// streams of the middle and far draws), their indirect commands, the near
+/// vertex and one index buffer (with the impostor tier's card), the baked
+/// clips, the impostor atlases, the tier lists (instance streams of the
+/// middle, far and impostor draws), their indirect commands, the near
 /// tier's compressed-cage slots, the emulated near tier's slot records,
 /// commands and triangle patterns, and a ring of per-frame instance buffers.
 /// Each backend's culling and binning technique writes the lists, commands
@@ -17,6 +18,7 @@
 #include "common/TechniqueExtension.h"
 #include "tessera/shaders/CrowdInstance.h"
 #include "common/GpuCharacter.h"
+#include "common/GpuImpostorAtlas.h"
 #include "tessera/backend/CrowdDesc.h"
 #include "tessera/core/Result.h"
 #include "tessera/gpu/Buffer.h"
@@ -44,13 +46,26 @@ public:
         /// The far tier's shadow casters' triangles over the far mesh's
         /// vertices (its own, or CrowdCharacterDesc::farCasterIndices).
         uint32_t farCasterFirstIndex = 0, farCasterTriangles = 0;
+        /// The impostor tier's card (TS_CROWD_IMPOSTOR_INDICES indices over
+        /// its 4 corners, shared by every creature).
+        uint32_t impostorFirstIndex = 0;
         /// Triangles tier `tier` draws per instance (before tessellation).
         uint32_t tierTriangles(uint32_t tier) const {
-            return tier == TS_LOD_FAR ? farTriangles : tier == TS_LOD_MIDDLE ? middleTriangles : cageTriangles;
+            switch (tier) {
+            case TS_LOD_NEAR: return cageTriangles;
+            case TS_LOD_MIDDLE: return middleTriangles;
+            case TS_LOD_FAR: return farTriangles;
+            default: return TS_CROWD_IMPOSTOR_INDICES / 3;
+            }
         }
         /// First index of tier `tier`'s mesh in the crowd's index buffer.
         uint32_t tierFirstIndex(uint32_t tier) const {
-            return tier == TS_LOD_FAR ? farFirstIndex : tier == TS_LOD_MIDDLE ? middleFirstIndex : cageFirstIndex;
+            switch (tier) {
+            case TS_LOD_NEAR: return cageFirstIndex;
+            case TS_LOD_MIDDLE: return middleFirstIndex;
+            case TS_LOD_FAR: return farFirstIndex;
+            default: return impostorFirstIndex;
+            }
         }
     };
 
@@ -92,6 +107,8 @@ public:
     /// the middle and far lists' instance counts into casterArgs(), for the
     /// casters' indirect draws that follow.
     void recordCasterArgs(VkCommandBuffer cmd);
+    /// The impostor tier's atlases and their sampler.
+    const GpuImpostorAtlas& impostors() const { return mImpostors; }
     gpu::Buffer& nearCages() { return mNear; }
     gpu::Buffer& nearOwners() { return mNearOwners; }
     /// The emulated near tier: a CrowdNearSlot per slot, and per creature
@@ -165,6 +182,7 @@ private:
     gpu::Buffer mNearSlotRecords, mNearCommands, mPatternCodes, mPatternIndices, mBakedVertices, mClipMeshes;
     gpu::BufferView mBakedView, mIndicesView, mClipsView, mNearView, mNearSlotsView, mBakedVerticesView,
         mClipMeshesView;
+    GpuImpostorAtlas mImpostors;
     std::array<gpu::Buffer, gpu::kFramesInFlight> mInstances;
     std::array<gpu::BufferView, gpu::kFramesInFlight> mInstancesView;
     std::array<gpu::Buffer, gpu::kFramesInFlight> mOccluders;

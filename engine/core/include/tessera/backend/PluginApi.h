@@ -18,7 +18,9 @@
 /// DeviceFeatures' mesh-shader fields, BackendCapabilities::usesMeshShaders; 9:
 /// FrameInfo::shadows and shadowCascades, BackendCapabilities::cascadedShadows;
 /// 10: CrowdCharacterDesc::farCasterIndices, Shadows::None; 11:
-/// CrowdDrawInfo::occluders, CrowdLodParams::occluder).
+/// CrowdDrawInfo::occluders, CrowdLodParams::occluder; 12: the impostor
+/// tier: TS_LOD_TIERS 4 (CrowdTierCounts, CrowdTiers, FrameReport's crowd
+/// counts), 3-bit state tiers, CrowdCharacterDesc::impostor).
 
 #include "tessera/backend/Backend.h"
 
@@ -27,14 +29,14 @@
 namespace tessera::backend {
 
 /// The contract version this host and its plugins are built against.
-inline constexpr uint32_t kPluginAbiVersion = 11;
+inline constexpr uint32_t kPluginAbiVersion = 12;
 
 #define TESSERA_PLUGIN_STRINGIFY_(x) #x
 #define TESSERA_PLUGIN_STRINGIFY(x) TESSERA_PLUGIN_STRINGIFY_(x)
 #define TESSERA_PLUGIN_CONCAT_(a, b) a##b
 #define TESSERA_PLUGIN_CONCAT(a, b) TESSERA_PLUGIN_CONCAT_(a, b)
 /// Must equal kPluginAbiVersion (a macro because it builds a symbol name).
-#define TESSERA_PLUGIN_ABI_VERSION 11
+#define TESSERA_PLUGIN_ABI_VERSION 12
 #define TESSERA_PLUGIN_ENTRY_SYMBOL TESSERA_PLUGIN_CONCAT(registerPlugin_v, TESSERA_PLUGIN_ABI_VERSION)
 /// The prefix shared by every version of the entry point, for mismatch reports.
 #define TESSERA_PLUGIN_ENTRY_PREFIX "registerPlugin_v"

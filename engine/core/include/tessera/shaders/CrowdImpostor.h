@@ -83,6 +83,17 @@ TS_INLINE vec3 tsImpostorProject(vec3 p, vec3 d, vec3 centre, float radius) {
     return vec3(0.5f + dot(q, right) / (2.0f * radius), 0.5f - dot(q, up) / (2.0f * radius), dot(q, d));
 }
 
+/// Where point (s, t) of a cell's creature square (s to the right, t down,
+/// both in [0, 1]; tsImpostorProject's) lies in a layer, in [0, 1]^2: the
+/// square fills the cell inside its TS_IMPOSTOR_BORDER margin. The cards
+/// sample through this one function. (Provisional: the baker's mapping of
+/// (s, t) to texels replaces it, so both sides use one definition.)
+TS_INLINE vec2 tsImpostorLayerUv(uvec2 cell, vec2 st) {
+    const float n = float(TS_IMPOSTOR_VIEWS), side = float(TS_IMPOSTOR_CELL);
+    const float border = float(TS_IMPOSTOR_BORDER) / side, inner = (side - 2.0f * float(TS_IMPOSTOR_BORDER)) / side;
+    return vec2((float(cell.x) + border + st.x * inner) / n, (float(cell.y) + border + st.y * inner) / n);
+}
+
 /// The layer and weight of the two phases around `phase` of a clip of
 /// `looping` kind (as tsBakedFramePair: a looping clip wraps, any other
 /// clamps): layers first + k, first + k2 and the weight of the second.

@@ -20,6 +20,7 @@
 //   TS_BINDING_CROWD_ARGS (17)       the indirect commands and counters
 //   TS_BINDING_CROWD_NEAR (18)       uvec4 compressed cages of the near slots
 //   TS_BINDING_CROWD_SLOTS (19)      uvec2 (instance, creature) per near slot
+//   TS_BINDING_CROWD_IMPOSTOR_ALBEDO (51), _NORMAL (52)  the impostor tier's atlases
 #ifndef TESSERA_CROWD_INSTANCE_H
 #define TESSERA_CROWD_INSTANCE_H
 #include "tessera/shaders/CrowdLod.h"
@@ -129,6 +130,16 @@ TS_INLINE uint tsCrowdListBase(uint tier, uint creature, uint creatures, uint ca
     return (tier * creatures + creature) * capacity;
 }
 
+/// The corner index `i` (< TS_CROWD_IMPOSTOR_INDICES) of an impostor card
+/// names: corner k is (s, t) = (k & 1, k >> 1) of the card, s to the right
+/// and t down (t = 0 the top), and the two triangles (2, 3, 1) and
+/// (2, 1, 0) are counter-clockwise seen from the eye the card faces. The
+/// crowd's index buffer (GpuCrowd) and meshshader's mesh stage both take
+/// the card from here.
+TS_INLINE uint tsCrowdImpostorIndex(uint i) {
+    return (0x012132u >> (4u * i)) & 15u;
+}
+
 /// The world matrix of an instance: translate to its feet, turn by the
 /// heading about +Y, scale.
 TS_INLINE mat4 tsCrowdWorld(CrowdInstance instance) {
@@ -163,6 +174,18 @@ TS_NAMESPACE_END
 #define TS_BINDING_CROWD_OCCLUDERS 50
 /// The most cells a side of the horizon's grid has (GpuCrowd's buffers).
 #define TS_CROWD_MAX_OCCLUDER_CELLS 128u
+/// The impostor tier's atlases (CrowdImpostor.h), every creature's layers in
+/// the order of the crowd's global baked clips, so that an instance's first
+/// layer is ids.z * TS_IMPOSTOR_PHASES: base colour and coverage (a
+/// 2D-array sampler over R8G8B8A8_SRGB) and the model-space normal
+/// (R8G8B8A8_UNORM, n * 0.5 + 0.5), TS_IMPOSTOR_MIPS levels, sampled
+/// linearly between texels and mips, clamped at the edges. Bound for the
+/// passes that draw the tier.
+#define TS_BINDING_CROWD_IMPOSTOR_ALBEDO 51
+#define TS_BINDING_CROWD_IMPOSTOR_NORMAL 52
+/// A card's indices: two triangles over its four corners
+/// (tsCrowdImpostorIndex).
+#define TS_CROWD_IMPOSTOR_INDICES 6u
 
 /// The indirect buffer (uint words): per list an indexed draw command
 /// (5 words: indexCount, instanceCount, firstIndex, vertexOffset,

@@ -45,7 +45,8 @@ TS_CHECK_SIZE(CrowdMeshlet, 48)
 /// (task workgroups per instance, the instances of a row, rows), w the
 /// workgroups per instance (cage triangle groups, tsCrowdMeshCommand); the
 /// middle and far tiers: (workgroups of a row, rows, 1), w the mesh's
-/// meshlets (tsCrowdMeshletCommand).
+/// meshlets (tsCrowdMeshletCommand); the impostor tier: (mesh workgroups
+/// of a row, rows, 1), w 0 (tsCrowdImpostorCommand).
 struct CrowdMeshCommand {
     uvec4 groups;
 };
@@ -76,6 +77,19 @@ TS_INLINE uvec4 tsCrowdMeshletCommand(uint count, uint meshlets) {
     const uint groups = (count * meshlets + TS_CROWD_TASK_ITEMS - 1u) / TS_CROWD_TASK_ITEMS;
     if (groups == 0u) return uvec4(0u, 0u, 0u, meshlets);
     return uvec4(min(groups, TS_CROWD_TASK_ROW), (groups + TS_CROWD_TASK_ROW - 1u) / TS_CROWD_TASK_ROW, 1u, meshlets);
+}
+
+/// Cards one impostor mesh workgroup emits (4 vertices and 2 triangles
+/// each: 128 and 64 per workgroup).
+#define TS_CROWD_IMPOSTOR_CARDS 32u
+
+/// The command of an impostor list holding `count` entries: mesh workgroups
+/// of TS_CROWD_IMPOSTOR_CARDS entries each, launched with no task stage, in
+/// rows of TS_CROWD_TASK_ROW.
+TS_INLINE uvec4 tsCrowdImpostorCommand(uint count) {
+    const uint groups = (count + TS_CROWD_IMPOSTOR_CARDS - 1u) / TS_CROWD_IMPOSTOR_CARDS;
+    if (groups == 0u) return uvec4(0u, 0u, 0u, 0u);
+    return uvec4(min(groups, TS_CROWD_TASK_ROW), (groups + TS_CROWD_TASK_ROW - 1u) / TS_CROWD_TASK_ROW, 1u, 0u);
 }
 
 /// Whether meshlet `m` of an instance placed by `world` (a rotation times

@@ -1,0 +1,145 @@
+#include "common/GpuImpostorAtlas.h"
+
+#include "tessera/character/BakedAnimation.h"
+#include "tessera/character/ImpostorAtlas.h"
+#include "tessera/shaders/CrowdImpostor.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace tessera::backends {
+namespace {
+
+/// One image's texels (mip by mip, creature by creature) and the copies of
+/// them into its layers.
+struct Staged {
+    std::vector<std::byte> texels;
+    std::vector<VkBufferImageCopy> regions;
+
+    /// Appends `bytes` and returns their offset.
+    VkDeviceSize append(std::span<const std::byte> bytes) {
+        const VkDeviceSize at = texels.size();
+        texels.insert(texels.end(), bytes.begin(), bytes.end());
+        return at;
+    }
+    /// Copies `layers` layers of mip `mip` (side `side`) from `offset` to
+    /// the image's layers from `firstLayer`.
+    void copy(VkDeviceSize offset, uint32_t mip, uint32_t side, uint32_t firstLayer, uint32_t layers) {
+        VkBufferImageCopy region{};
+        region.bufferOffset = offset;
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, firstLayer, layers};
+        region.imageExtent = {side, side, 1};
+        regions.push_back(region);
+    }
+};
+
+/// How a creature's atlas maps onto its baked clips' layers: `direct` when
+/// it holds a clip per baked clip (the rest pose first), `skipsRest` when it
+/// holds its asset's clips only (character::bakeImpostors: baked clip k + 1
+/// is atlas clip k, and the rest pose, which it does not bake, shows atlas
+/// clip 0's first phase); unusable (clear layers) otherwise.
+enum class Mapping { Clear, Direct, SkipsRest };
+
+Mapping mappingOf(const character::ImpostorAtlas* atlas, uint32_t side, uint32_t bakedClips) {
+    if (!atlas || atlas->size != side || atlas->albedo.size() != TS_IMPOSTOR_MIPS ||
+        atlas->normal.size() != TS_IMPOSTOR_MIPS)
+        return Mapping::Clear;
+    for (uint32_t mip = 0; mip < TS_IMPOSTOR_MIPS; ++mip) {
+        const size_t bytes = size_t(side >> mip) * (side >> mip) * 4 * atlas->layers;
+        if (atlas->albedo[mip].size() != bytes || atlas->normal[mip].size() != bytes) return Mapping::Clear;
+    }
+    if (atlas->layers == bakedClips * TS_IMPOSTOR_PHASES) return Mapping::Direct;
+    if (bakedClips > 1 && atlas->layers == (bakedClips - 1) * TS_IMPOSTOR_PHASES) return Mapping::SkipsRest;
+    return Mapping::Clear;
+}
+
+gpu::Image makeImage(gpu::Device& device, uint32_t side, uint32_t layers, VkFormat format, const Staged& staged,
+                     const char* name) {
+    gpu::ImageDesc desc;
+    desc.width = side;
+    desc.height = side;
+    desc.format = format;
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    desc.mipLevels = TS_IMPOSTOR_MIPS;
+    // Always TS_IMPOSTOR_PHASES layers or more: the view is 2D_ARRAY, as the
+    // shaders declare it.
+    desc.arrayLayers = layers;
+    desc.name = name;
+    gpu::Image image(device, desc);
+    image.upload(staged.texels, staged.regions, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    return image;
+}
+
+} // namespace
+
+GpuImpostorAtlas GpuImpostorAtlas::create(gpu::Device& device, const backend::CrowdDesc& desc) {
+    const character::BakedAnimation& baked = *desc.animation;
+    const uint32_t creatures = uint32_t(desc.characters.size());
+    const uint32_t fullSide = TS_IMPOSTOR_VIEWS * TS_IMPOSTOR_CELL;
+    // Creature c's baked clips run from characterClipBase[c] to the next
+    // creature's first.
+    std::vector<uint32_t> first(creatures), clips(creatures);
+    std::vector<Mapping> mappings(creatures);
+    for (uint32_t c = 0; c < creatures; ++c) {
+        first[c] = baked.characterClipBase[c];
+        const uint32_t end = c + 1 < creatures ? baked.characterClipBase[c + 1] : uint32_t(baked.clips.size());
+        clips[c] = end > first[c] ? end - first[c] : 0u;
+        mappings[c] = mappingOf(desc.characters[c].impostor, fullSide, clips[c]);
+    }
+    // With no atlas at all, one clip's clear layers as small as
+    // TS_IMPOSTOR_MIPS levels allow: every layer index clamps to them.
+    const bool any = std::any_of(mappings.begin(), mappings.end(), [](Mapping m) { return m != Mapping::Clear; });
+    const uint32_t side = any ? fullSide : 1u << (TS_IMPOSTOR_MIPS - 1);
+    const uint32_t layers = (any ? uint32_t(baked.clips.size()) : 1u) * TS_IMPOSTOR_PHASES;
+
+    Staged albedo, normal;
+    for (uint32_t mip = 0; mip < TS_IMPOSTOR_MIPS; ++mip) {
+        const uint32_t mipSide = side >> mip;
+        const size_t layerBytes = size_t(mipSide) * mipSide * 4;
+        for (Staged* staged : {&albedo, &normal}) {
+            if (!any) {
+                const std::vector<std::byte> clear(layerBytes * layers, std::byte{0});
+                staged->copy(staged->append(clear), mip, mipSide, 0, layers);
+                continue;
+            }
+            for (uint32_t c = 0; c < creatures; ++c) {
+                const uint32_t base = first[c] * TS_IMPOSTOR_PHASES, count = clips[c] * TS_IMPOSTOR_PHASES;
+                if (count == 0) continue;
+                if (mappings[c] == Mapping::Clear) {
+                    const std::vector<std::byte> clear(layerBytes * count, std::byte{0});
+                    staged->copy(staged->append(clear), mip, mipSide, base, count);
+                    continue;
+                }
+                const character::ImpostorAtlas& atlas = *desc.characters[c].impostor;
+                const std::vector<uint8_t>& bytes = staged == &albedo ? atlas.albedo[mip] : atlas.normal[mip];
+                const VkDeviceSize at = staged->append(std::as_bytes(std::span<const uint8_t>(bytes)));
+                if (mappings[c] == Mapping::Direct) {
+                    staged->copy(at, mip, mipSide, base, count);
+                    continue;
+                }
+                staged->copy(at, mip, mipSide, base + TS_IMPOSTOR_PHASES, count - TS_IMPOSTOR_PHASES);
+                for (uint32_t k = 0; k < TS_IMPOSTOR_PHASES; ++k) staged->copy(at, mip, mipSide, base + k, 1);
+            }
+        }
+    }
+    GpuImpostorAtlas a;
+    a.mAlbedo = makeImage(device, side, layers, VK_FORMAT_R8G8B8A8_SRGB, albedo, "crowd.impostorAlbedo");
+    a.mNormal = makeImage(device, side, layers, VK_FORMAT_R8G8B8A8_UNORM, normal, "crowd.impostorNormal");
+    a.mSampler = gpu::Sampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "crowd.impostorSampler");
+    uint64_t mipTexels = 0;
+    for (uint32_t mip = 0; mip < TS_IMPOSTOR_MIPS; ++mip) mipTexels += uint64_t(side >> mip) * (side >> mip);
+    a.mBytes = 2 * 4 * mipTexels * layers;
+    return a;
+}
+
+VkDescriptorImageInfo GpuImpostorAtlas::albedo() const {
+    return {mSampler.handle(), mAlbedo.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+}
+
+VkDescriptorImageInfo GpuImpostorAtlas::normal() const {
+    return {mSampler.handle(), mNormal.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+}
+
+} // namespace tessera::backends
