@@ -3,6 +3,8 @@
 /// A backend's own account of a frame, for tests of the data model and for
 /// the HUD. GPU-measured figures live in the profiler, not here.
 
+#include "tessera/shaders/CrowdLod.h"
+
 #include <cstdint>
 
 namespace tessera::backend {
@@ -20,14 +22,14 @@ struct FrameReport {
     uint64_t characterTriangles = 0;
     /// Triangles the backend submitted (before clipping), as it computes them.
     uint64_t trianglesSubmitted = 0;
-    /// Crowd instances drawn per LOD tier (near, middle, far; fading copies
-    /// included) and their triangles before tessellation (the near tier's
+    /// Crowd instances drawn per LOD tier (near, middle, far, impostor;
+    /// fading copies included) and their triangles before tessellation (the near tier's
     /// cage triangles; what tessellation made of them is in the pass's
     /// pipeline statistics), as the GPU's lists counted them: a backend
     /// reads its counters back when the frame slot comes round again, so
     /// they describe an earlier frame of the same crowd.
-    uint32_t crowdInstances[3] = {0, 0, 0};
-    uint64_t crowdTriangles[3] = {0, 0, 0};
+    uint32_t crowdInstances[TS_LOD_TIERS] = {};
+    uint64_t crowdTriangles[TS_LOD_TIERS] = {};
     /// Device bytes of the crowds drawn this frame: meshes, clips, lists,
     /// commands, near slots, per-frame instances and the technique's own
     /// state and intermediate targets (also in intermediateBytes).
