@@ -21,17 +21,17 @@ backend::CrowdTierCounts NullCrowd::draw(const backend::CrowdDrawInfo& draw) {
         state = shader::tsLodUpdate(state, instance.sphere, p,
                                     draw.occluders.empty() ? nullptr : draw.occluders.data());
         const uint32_t tier = shader::tsLodStateTier(state);
-        if (tier == TS_LOD_NONE) continue;
+        if (tier == TS_LOD_NONE) continue; // out of view or behind the terrain
         const Creature& creature = mCreatures[instance.ids.y];
         auto add = [&](uint32_t t) {
             mTiers.instances[t].push_back(i);
             ++counts.instances[t];
             // Before tessellation, as the GPU backends count them (the near
             // tier's cage; tessellation's output is the pass's statistics).
-            counts.triangles[t] += t == TS_LOD_IMPOSTOR ? TS_CROWD_IMPOSTOR_INDICES / 3
-                                   : t == TS_LOD_FAR      ? creature.farTriangles
-                                   : t == TS_LOD_MIDDLE   ? creature.middleTriangles
-                                                          : creature.cageTriangles;
+            counts.triangles[t] += t == TS_LOD_IMPOSTOR ? 2u
+                                   : t == TS_LOD_FAR    ? creature.farTriangles
+                                   : t == TS_LOD_MIDDLE ? creature.middleTriangles
+                                                        : creature.cageTriangles;
         };
         add(tier);
         if (shader::tsLodStateFade(state) > 0u) add(shader::tsLodStatePrevious(state));

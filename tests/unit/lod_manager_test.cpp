@@ -59,6 +59,7 @@ LodPolicy testPolicy() {
     LodPolicy policy;
     policy.nearPixels = 128.0f;
     policy.farPixels = 40.0f;
+    policy.impostorPixels = 0.0f; // impostors only past the far budget, unless a test asks
     policy.targetEdgePixels = 1.0f;
     return policy;
 }
@@ -201,7 +202,7 @@ TEST(LodManager, OneHugeInstanceGetsALowerLevelCapNotAnOverrun) {
     EXPECT_EQ(g.counts[TS_LOD_MIDDLE].instances, 1u);
 }
 
-TEST(LodManager, TheFarCapDropsTheSmallest) {
+TEST(LodManager, PastTheFarCapTheSmallestAreImpostorsNeverDropped) {
     LodPolicy policy = noFade();
     policy.budget.maxFarInstances = 10;
     LodManager lods(policy, 1);
@@ -211,8 +212,58 @@ TEST(LodManager, TheFarCapDropsTheSmallest) {
     const lod::LodFrame& f = lods.update(instances, characters, view());
     EXPECT_EQ(f.counts[TS_LOD_MIDDLE].instances, 11u);
     EXPECT_EQ(f.counts[TS_LOD_FAR].instances, 10u);
-    EXPECT_EQ(f.dropped, 9u);
+    EXPECT_EQ(f.counts[TS_LOD_IMPOSTOR].instances, 9u);
+    EXPECT_EQ(f.counts[TS_LOD_IMPOSTOR].triangles, 18u) << "a card is two triangles";
+    EXPECT_EQ(f.pastFarBudget, 9u);
+    EXPECT_EQ(f.inView, 30u);
     for (const lod::LodDraw& d : f.tiers[TS_LOD_FAR]) EXPECT_LT(d.instance, 21u);
+    for (const lod::LodDraw& d : f.tiers[TS_LOD_IMPOSTOR]) EXPECT_GE(d.instance, 21u);
+}
+
+TEST(LodManager, BelowTheImpostorThresholdACreatureIsACardWithHysteresis) {
+    LodPolicy policy = noFade();
+    policy.impostorPixels = 16.0f;
+    LodManager lods(policy, 1);
+    const auto characters = creature();
+    std::vector<LodInstance> instances = {at(distanceFor(17.0f), 0), at(distanceFor(15.0f), 1),
+                                          at(distanceFor(200.0f), 2)};
+    const lod::LodFrame& f = lods.update(instances, characters, view());
+    EXPECT_EQ(tierOf(f, 0), TS_LOD_FAR);
+    EXPECT_EQ(tierOf(f, 1), TS_LOD_IMPOSTOR);
+    EXPECT_EQ(f.pastFarBudget, 0u) << "by its size, not the budget";
+    // Shrunk within the hysteresis (15% below 16 px), the far one stays; the
+    // card needs the threshold itself to come back to the far mesh.
+    instances[0] = at(distanceFor(14.0f), 0);
+    instances[1] = at(distanceFor(15.9f), 1);
+    lods.update(instances, characters, view());
+    EXPECT_EQ(tierOf(lods.frame(), 0), TS_LOD_FAR);
+    EXPECT_EQ(tierOf(lods.frame(), 1), TS_LOD_IMPOSTOR);
+    instances[0] = at(distanceFor(13.0f), 0);
+    instances[1] = at(distanceFor(16.5f), 1);
+    lods.update(instances, characters, view());
+    EXPECT_EQ(tierOf(lods.frame(), 0), TS_LOD_IMPOSTOR);
+    EXPECT_EQ(tierOf(lods.frame(), 1), TS_LOD_FAR);
+}
+
+TEST(LodManager, EveryCreatureInViewIsDrawnWhateverTheBudgets) {
+    // Budgets choose the representation, never whether (issue 31, item 0):
+    // with every mesh tier's budget at zero the crowd is all cards.
+    LodPolicy policy = testPolicy();
+    policy.budget.maxNearInstances = 0;
+    policy.budget.maxMiddleInstances = 0;
+    policy.budget.maxFarInstances = 0;
+    LodManager lods(policy, 1);
+    const auto characters = creature();
+    std::vector<LodInstance> instances;
+    for (uint32_t i = 0; i < 40; ++i) instances.push_back(at(distanceFor(20.0f + 10.0f * float(i)), i));
+    for (int frame = 0; frame < 3; ++frame) {
+        const lod::LodFrame& f = lods.update(instances, characters, view());
+        uint32_t drawn = 0;
+        for (uint32_t t = 0; t < lod::kTierCount; ++t)
+            for (const lod::LodDraw& d : f.tiers[t]) drawn += !d.fadingOut;
+        EXPECT_EQ(drawn, f.inView);
+        EXPECT_EQ(f.inView, 40u);
+    }
 }
 
 TEST(LodManager, ASpentBudgetNeverHandsAMeshMadeForFewerPixels) {
@@ -249,6 +300,7 @@ TEST(LodManager, AMovingCameraNeverExceedsTheBudgetAndEveryPathAgrees) {
     // lists are what the shared per-instance rule gives from the frame's
     // parameters (what the GPU passes run).
     LodPolicy policy = LodPolicy::forDevice(lod::DeviceClass::Cpu);
+    policy.budget.maxFarInstances = 100; // spent in most frames: the rest become impostors
     LodManager lods(policy, 2);
     const auto characters = creature();
     Random random(11);
@@ -257,7 +309,7 @@ TEST(LodManager, AMovingCameraNeverExceedsTheBudgetAndEveryPathAgrees) {
         instances.push_back({glm::vec4(random.range(-60.0f, 60.0f), 0.0f, random.range(-60.0f, 60.0f), kRadius),
                              i * 7 + 3, 0});
     std::vector<uint32_t> gpuState(6000 * 7 + 3, shader::tsLodStateNone());
-    uint32_t demoted = 0, fading = 0, nearFrames = 0, dropped = 0;
+    uint32_t demoted = 0, fading = 0, nearFrames = 0, pastFar = 0;
     for (int frame = 0; frame < 240; ++frame) {
         scene::Camera c;
         const float progress = float(frame) / 240.0f;
@@ -276,7 +328,15 @@ TEST(LodManager, AMovingCameraNeverExceedsTheBudgetAndEveryPathAgrees) {
         for (const lod::LodDraw& d : f.tiers[TS_LOD_FAR])
             if (!d.fadingOut) EXPECT_LT(shader::tsLodPixels(instances[d.instance].sphere, f.params), policy.farPixels);
         demoted += f.budgetDemoted;
-        dropped += f.dropped;
+        pastFar += f.pastFarBudget;
+        // Every instance in view is drawn, in one tier or another (a fading
+        // instance twice: its two copies both count as fading).
+        uint32_t total = 0, fadingCopies = 0;
+        for (const lod::LodTierCount& count : f.counts) {
+            total += count.instances;
+            fadingCopies += count.fading;
+        }
+        EXPECT_EQ(total, f.inView + fadingCopies / 2) << "frame " << frame;
         nearFrames += f.counts[TS_LOD_NEAR].instances > 0;
         for (const lod::LodTierCount& count : f.counts) fading += count.fading;
         std::array<uint32_t, lod::kTierCount> drawn{};
@@ -293,11 +353,12 @@ TEST(LodManager, AMovingCameraNeverExceedsTheBudgetAndEveryPathAgrees) {
     }
     // The flight does exercise the budget and the fades.
     EXPECT_GT(demoted, 0u);
-    EXPECT_GT(dropped, 0u);
+    EXPECT_GT(pastFar, 0u);
     EXPECT_GT(fading, 0u);
     EXPECT_GT(nearFrames, 10u);
-    std::printf("flight: %u demotions, %u dropped, %u fading copies, %u frames with near instances\n", demoted,
-                dropped, fading, nearFrames);
+    std::printf("flight: %u demotions, %u impostors past the far budget, %u fading copies, %u frames with near "
+                "instances\n",
+                demoted, pastFar, fading, nearFrames);
 }
 
 TEST(LodManager, SameAnswerOnAnyThreadCount) {
@@ -322,6 +383,10 @@ TEST(LodPolicy, BadSettingsAreRefusedWithAMessage) {
     policy.budget.maxTessellatedTriangles = 0;
     ASSERT_FALSE(policy.validate().ok());
     EXPECT_NE(policy.validate().error().message.find("budget of zero"), std::string::npos);
+    policy = {};
+    policy.impostorPixels = policy.farPixels + 1.0f;
+    ASSERT_FALSE(policy.validate().ok());
+    EXPECT_NE(policy.validate().error().message.find("impostor threshold"), std::string::npos);
     policy = {};
     policy.farPixels = 500.0f;
     EXPECT_FALSE(policy.validate().ok());

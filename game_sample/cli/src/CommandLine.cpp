@@ -98,6 +98,7 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
     if (given("--subdiv-budget")) o.subdiv.budget = t.subdivBudget;
     if (given("--lod-near")) o.lodNear = t.lodNear;
     if (given("--lod-far")) o.lodFar = t.lodFar;
+    if (given("--lod-impostor")) o.lodImpostor = t.lodImpostor;
     if (given("--lod-budget")) {
         if (t.lodBudget == 0)
             return fail("--lod-budget 0: a budget of zero tessellated triangles draws nothing tessellated; give at "
@@ -153,6 +154,9 @@ Result<Options> parseCommandLine(const std::vector<std::string>& args) {
     if (lodFar > lodNear)
         return fail("--lod-far ", cli::formatNumber(lodFar), " is above --lod-near ", cli::formatNumber(lodNear),
                     ": the far threshold must be the smaller");
+    if (o.lodImpostor && *o.lodImpostor > lodFar)
+        return fail("--lod-impostor ", cli::formatNumber(*o.lodImpostor), " is above --lod-far ", cli::formatNumber(lodFar),
+                    ": the impostor threshold must be the smaller");
     if ((!o.models.empty() || !o.surfaces.empty()) && !sceneGiven) o.scene = "characters";
     const bool crowdFlags = !o.agents.empty() || crowdDrawGiven;
     if (crowdFlags && !sceneGiven && o.bench.empty()) o.scene = "crowd";

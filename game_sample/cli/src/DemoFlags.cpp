@@ -87,6 +87,9 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
            "LOD threshold: characters at least PX pixels tall on screen are tessellated (default 192)");
     number("--lod-far", t.lodFar, 0.5, 100000, "PX",
            "characters below PX pixels tall are drawn with the simplest mesh (default 64), the cage in between");
+    number("--lod-impostor", t.lodImpostor, 0, 100000, "PX",
+           "characters below PX pixels tall are drawn as impostors, cards from their baked views (default 32; 0: only "
+           "those beyond the far tier's budget); at most --lod-far");
     count("--lod-budget", t.lodBudget, 0, UINT32_MAX, "T",
           "at most T tessellated triangles a frame (default: 24000000 on a GPU, 100000 on lavapipe)");
     count("--lod-near-max", t.lodNearMax, 0, 100000, "N",

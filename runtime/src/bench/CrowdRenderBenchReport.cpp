@@ -6,7 +6,7 @@
 namespace tessera::runtime {
 namespace {
 
-constexpr const char* kTierNames[3] = {"near", "middle", "far"};
+constexpr const char* kTierNames[lod::kTierCount] = {"near", "middle", "far", "impostor"};
 
 void writeSeries(JsonWriter& json, const char* key, const BenchSeries& series) {
     fixedObject(
@@ -47,11 +47,12 @@ void writeRow(JsonWriter& json, const CrowdRenderSummary& s, const CrowdRenderRo
                  {"skin", r.skinMs, 4},
                  {"near", r.tierMs[0], 4},
                  {"middle", r.tierMs[1], 4},
-                 {"far", r.tierMs[2], 4}});
+                 {"far", r.tierMs[2], 4},
+                 {"impostor", r.tierMs[3], 4}});
     fixed(json, "terrain_gpu_ms", r.terrainMs, 4);
     json.key("tiers");
     json.beginObject();
-    for (int t = 0; t < 3; ++t)
+    for (uint32_t t = 0; t < lod::kTierCount; ++t)
         fixedObject(json, kTierNames[t],
                     {{"instances", r.tierInstances[t], 1}, {"triangles", r.tierTriangles[t], 0}, {"hidden", r.tierHidden[t], 1}});
     json.endObject();
@@ -100,18 +101,20 @@ std::string crowdRenderBenchJson(const CrowdRenderSummary& s) {
 std::string crowdRenderBenchTable(const CrowdRenderSummary& s) {
     std::string out = format("crowd rendering, %ux%u, %u measured frames after %u, camera %s\n", s.width, s.height,
                              s.frames, s.warmupFrames, s.camera.c_str());
-    out += format("%-10s %7s | %8s %8s %8s | %7s %6s %7s %7s %7s %8s | %7s %7s %7s | %10s %10s %10s | %8s | %s\n",
+    out += format("%-10s %7s | %8s %8s %8s | %7s %6s %7s %7s %7s %7s %8s | %7s %7s %7s %7s | %10s %10s %10s | "
+                  "%8s | %s\n",
                   "backend", "agents", "GPU ms", "CPU ms", "sim ms", "cull+bin", "skin", "near", "middle", "far",
-                  "terrain", "n near", "n mid", "n far", "tri near", "tri mid", "tri far", "B/agent",
-                  "hidden near/mid/far");
+                  "imp", "terrain", "n near", "n mid", "n far", "n imp", "tri near", "tri mid", "tri far", "B/agent",
+                  "hidden near/mid/far/imp");
     for (const CrowdRenderRow& r : s.rows) {
-        out += format("%-10s %7u | %8.3f %8.3f %8.3f | %7.3f %6.3f %7.3f %7.3f %7.3f %8.3f | %7.0f %7.0f %7.0f | "
-                      "%10.0f %10.0f %10.0f | %8.1f | %.0f/%.0f/%.0f\n",
+        out += format("%-10s %7u | %8.3f %8.3f %8.3f | %7.3f %6.3f %7.3f %7.3f %7.3f %7.3f %8.3f | %7.0f %7.0f %7.0f "
+                      "%7.0f | %10.0f %10.0f %10.0f | %8.1f | %.0f/%.0f/%.0f/%.0f\n",
                       r.backend.c_str(), r.agents, r.gpuFrame.median, r.cpuFrame.median, r.simulation.median,
-                      r.cullBinMs, r.skinMs, r.tierMs[0], r.tierMs[1], r.tierMs[2], r.terrainMs, r.tierInstances[0],
-                      r.tierInstances[1], r.tierInstances[2], r.tierTriangles[0], r.tierTriangles[1],
-                      r.tierTriangles[2], r.agents ? double(r.crowdBytes) / r.agents : 0.0, r.tierHidden[0],
-                      r.tierHidden[1], r.tierHidden[2]);
+                      r.cullBinMs, r.skinMs, r.tierMs[0], r.tierMs[1], r.tierMs[2], r.tierMs[3], r.terrainMs,
+                      r.tierInstances[0], r.tierInstances[1], r.tierInstances[2], r.tierInstances[3],
+                      r.tierTriangles[0], r.tierTriangles[1], r.tierTriangles[2],
+                      r.agents ? double(r.crowdBytes) / r.agents : 0.0, r.tierHidden[0], r.tierHidden[1],
+                      r.tierHidden[2], r.tierHidden[3]);
         if (!r.suspectPasses.empty()) {
             std::string names;
             for (const std::string& n : r.suspectPasses) names += (names.empty() ? "" : ", ") + n;

@@ -5,6 +5,7 @@
 /// and their JSON and table.
 
 #include "bench/BenchSeries.h"
+#include "tessera/lod/LodFrame.h"
 
 #include <array>
 #include <cstdint>
@@ -29,15 +30,15 @@ struct CrowdRenderRow {
     /// crowd pass but the skin and the draws), the near tier's skinning, each
     /// tier's draw; and everything else (the terrain).
     double cullBinMs = 0.0, skinMs = 0.0, terrainMs = 0.0;
-    std::array<double, 3> tierMs{};
+    std::array<double, lod::kTierCount> tierMs{};
     /// Per tier: instances the GPU drew (fading copies included; the
     /// backend's counts) and triangles (the tier's draw pass's clipping
     /// invocations: after tessellation), medians.
-    std::array<double, 3> tierInstances{};
-    std::array<double, 3> tierTriangles{};
+    std::array<double, lod::kTierCount> tierInstances{};
+    std::array<double, lod::kTierCount> tierTriangles{};
     /// Per tier: agents in the frustum the terrain hid (horizon culling, the
     /// CPU reference's counts, by the tier their size would have taken).
-    std::array<double, 3> tierHidden{};
+    std::array<double, lod::kTierCount> tierHidden{};
     uint64_t crowdBytes = 0; ///< device memory of the crowd (FrameReport::crowdBytes)
     /// GPU passes whose timestamps cannot be trusted against the frame
     /// (lavapipe misses the rasterisation of some passes): named, not charted.

@@ -18,9 +18,11 @@ namespace tessera::runtime {
 namespace {
 
 constexpr uint32_t kDefaultSizes[] = {1000, 10000, 65000};
-constexpr const char* kTierPasses[3] = {"crowd.near", "crowd.middle", "crowd.far"};
-constexpr const char* kTierCounters[3] = {"crowd near instances", "crowd middle instances", "crowd far instances"};
-constexpr const char* kHiddenCounters[3] = {"crowd near hidden", "crowd middle hidden", "crowd far hidden"};
+constexpr const char* kTierPasses[lod::kTierCount] = {"crowd.near", "crowd.middle", "crowd.far", "crowd.impostor"};
+constexpr const char* kTierCounters[lod::kTierCount] = {"crowd near instances", "crowd middle instances",
+                                                       "crowd far instances", "crowd impostor instances"};
+constexpr const char* kHiddenCounters[lod::kTierCount] = {"crowd near hidden", "crowd middle hidden",
+                                                         "crowd far hidden", "crowd impostor hidden"};
 
 BenchPlan crowdPlan() {
     BenchPlan plan;
@@ -113,7 +115,7 @@ void summarizeCpu(const profiler::Profiler& profiler, uint64_t first, uint64_t e
     std::map<std::string, std::vector<double>> counters;
     for (const auto& c : profiler.counters())
         if (c.frame >= first && c.frame < end) counters[c.name].push_back(c.value);
-    for (int t = 0; t < 3; ++t) {
+    for (uint32_t t = 0; t < lod::kTierCount; ++t) {
         row.tierInstances[size_t(t)] = summarizeSeries(counters[kTierCounters[t]]).median;
         row.tierHidden[size_t(t)] = summarizeSeries(counters[kHiddenCounters[t]]).median;
     }

@@ -13,6 +13,10 @@ void CharacterPoser::begin(const scene::Camera& camera, const CharacterLevels& l
     mLevels = levels;
     lod::LodPolicy policy = levels.lod;
     policy.fixedLevel = levels.fixedLevel.value_or(0.0f);
+    // Characters drawn one by one have no impostor tier (it is the instanced
+    // crowd's, drawn from its lists): the far tier takes the smallest.
+    policy.impostorPixels = 0.0f;
+    policy.budget.maxFarInstances = lod::LodBudget::kUnlimited;
     mLod.setPolicy(policy);
 }
 

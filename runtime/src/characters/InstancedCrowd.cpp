@@ -76,7 +76,7 @@ backend::CrowdDesc InstancedCrowd::desc(const CharacterAssets& assets, uint32_t 
         mCosts.push_back(cost);
         mCharacters.push_back(
             {assets.handle(i), &asset.asset.cage, mFarMeshes[i], mMiddleIndices[i], mFarCasterIndices[i],
-             /* impostor: the baker's atlas, once it is loaded */ nullptr, cost.levelPerPixel});
+             nullptr /* impostor: from the assets (imp-bake) */, cost.levelPerPixel});
     }
     const uint32_t nearSlots = policy.budget.maxNearInstances;
     backend::CrowdDesc desc;
@@ -143,6 +143,11 @@ Status InstancedCrowd::writeTiers(const std::string& path, const std::string& ba
     json.beginObject();
     json.keyValue("backend", backend);
     json.keyValue("instances", uint64_t(mInstances.size()));
+    // The reference's agents in the frustum and not behind the terrain
+    // (every one is drawn, in some tier), and of those the ones drawn as
+    // impostors only because the far tier's budget was spent.
+    json.keyValue("inView", uint64_t(mLod.frame().inView));
+    json.keyValue("pastFarBudget", uint64_t(mLod.frame().pastFarBudget));
     // The reference's agents in the frustum the terrain hides, by the tier
     // their size would have taken.
     json.key("hiddenByTerrain");

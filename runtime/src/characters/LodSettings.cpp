@@ -1,10 +1,13 @@
 #include "characters/LodSettings.h"
 
+#include <algorithm>
+
 namespace tessera::runtime {
 
 lod::LodPolicy measureEveryCharacter() {
     lod::LodPolicy policy;
     policy.nearPixels = policy.farPixels = 0.5f;
+    policy.impostorPixels = 0.0f;
     policy.fadeFrames = 0;
     policy.budget.maxNearInstances = lod::LodBudget::kUnlimited;
     policy.budget.maxTessellatedTriangles = UINT64_MAX;
@@ -15,6 +18,10 @@ Result<lod::LodPolicy> lodPolicyFor(const Options& options, lod::DeviceClass dev
     lod::LodPolicy policy = options.characterLevel ? measureEveryCharacter() : lod::LodPolicy::forDevice(device);
     if (options.lodNear) policy.nearPixels = *options.lodNear;
     if (options.lodFar) policy.farPixels = *options.lodFar;
+    if (options.lodImpostor) policy.impostorPixels = *options.lodImpostor;
+    // A far threshold given below the default impostor threshold keeps
+    // impostors below it (the user asked for far meshes down to that size).
+    else if (options.lodFar) policy.impostorPixels = std::min(policy.impostorPixels, policy.farPixels);
     if (options.lodBudget) policy.budget.maxTessellatedTriangles = *options.lodBudget;
     if (options.lodNearMax) policy.budget.maxNearInstances = *options.lodNearMax;
     if (options.lodMiddleMax) policy.budget.maxMiddleInstances = *options.lodMiddleMax;

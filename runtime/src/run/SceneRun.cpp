@@ -188,9 +188,10 @@ void SceneRun::renderFrame(uint32_t frame, bool readback) {
             crowdDraw = mInstanced->drawInfo(mOptions.displacement, mOptions.lodColors);
             // The agents the terrain hid this frame, by the tier their size
             // would have taken (the CPU reference's; every backend culls the same).
-            static const char* const kHidden[3] = {"crowd near hidden", "crowd middle hidden", "crowd far hidden"};
+            static const char* const kHidden[lod::kTierCount] = {"crowd near hidden", "crowd middle hidden",
+                                                                 "crowd far hidden", "crowd impostor hidden"};
             auto& profiler = profiler::Profiler::global();
-            for (int t = 0; t < 3; ++t)
+            for (uint32_t t = 0; t < lod::kTierCount; ++t)
                 profiler.recordCounter({kHidden[t], uint64_t(frame), profiler.nowNs(),
                                         double(mInstanced->lod().hidden[size_t(t)])});
         }

@@ -24,9 +24,9 @@ void recordCounters(uint32_t frameIndex, const backend::FrameReport& report, boo
     if (characters) record("character triangles", double(report.characterTriangles));
     if (!crowd) return;
     // The GPU's own counts (a backend reads them back a few frames late).
-    static const char* const kTierCounters[3] = {"crowd near instances", "crowd middle instances",
-                                                 "crowd far instances"};
-    for (int t = 0; t < 3; ++t) record(kTierCounters[t], double(report.crowdInstances[t]));
+    static const char* const kTierCounters[TS_LOD_TIERS] = {"crowd near instances", "crowd middle instances",
+                                                            "crowd far instances", "crowd impostor instances"};
+    for (uint32_t t = 0; t < TS_LOD_TIERS; ++t) record(kTierCounters[t], double(report.crowdInstances[t]));
 }
 
 } // namespace

@@ -52,8 +52,8 @@ void drawCountsSection(SceneRun& run, const FrameStats& stats) {
         ImGui::Text("characters %u, tessellated triangles %llu", report.charactersDrawn,
                     static_cast<unsigned long long>(report.characterTriangles));
     if (run.instancedCrowd())
-        ImGui::Text("crowd instances near %u, middle %u, far %u", report.crowdInstances[0], report.crowdInstances[1],
-                    report.crowdInstances[2]);
+        ImGui::Text("crowd instances near %u, middle %u, far %u, impostor %u", report.crowdInstances[0],
+                    report.crowdInstances[1], report.crowdInstances[2], report.crowdInstances[3]);
     if (report.subdivDomains) ImGui::Text("subdivision domains %u", report.subdivDomains);
     ImGui::Text("intermediate memory %.1f MiB, %u passes", double(report.intermediateBytes) / 1048576.0, report.passes);
     if (!stats.hasStatistics()) return;

@@ -62,7 +62,7 @@ const LodFrame& LodManager::update(std::span<const LodInstance> instances, std::
     LodFrame& f = mFrame;
     for (auto& tier : f.tiers) tier.clear();
     f.counts = {};
-    f.inView = f.dropped = f.budgetDemoted = f.tierChanges = 0;
+    f.inView = f.pastFarBudget = f.budgetDemoted = f.tierChanges = 0;
     f.hidden = {};
     shader::CrowdLodParams& p = f.params;
     for (size_t i = 0; i < 6; ++i) p.planes[i] = view.frustum.planes()[i];
@@ -73,7 +73,7 @@ const LodFrame& LodManager::update(std::span<const LodInstance> instances, std::
     mOccluders = occlusion ? view.occluders.data() : nullptr;
     p.thresholds = {mPolicy.nearPixels, mPolicy.farPixels, mPolicy.hysteresis, float(mPolicy.fadeFrames)};
     p.cuts = {0.0f, 0.0f, 0.0f, mPolicy.fadeFrames > 0 ? 1.0f : 0.0f};
-    p.levels = {std::max(1.0f, view.maxLevel), mPolicy.fixedLevel, 0.0f, 0.0f};
+    p.levels = {std::max(1.0f, view.maxLevel), mPolicy.fixedLevel, mPolicy.impostorPixels, 0.0f};
 
     uint32_t maxId = 0;
     for (const LodInstance& instance : instances) maxId = std::max(maxId, instance.id);
@@ -126,7 +126,7 @@ void LodManager::fitBudget(std::span<const LodInstance> instances, std::span<con
             const LodCharacter& character = characters[instances[i].character];
             const uint64_t cost = tier == TS_LOD_NEAR ? nearTriangles(seen.pixels, character, cap) : 1u;
             const bool wasHere = shader::tsLodStateTier(state) == tier;
-            const bool candidate = seen.tier == TS_LOD_NONE && (tier == TS_LOD_FAR || seen.candidate <= tier);
+            const bool candidate = seen.tier == TS_LOD_NONE && seen.candidate <= tier;
             if (candidate) {
                 items.push_back({seen.pixels, instances[i].id, i, cost, wasHere, continuesFadeFrom(state, tier)});
             } else if ((wasHere && seen.tier != tier) || continuesFadeFrom(state, tier)) {
@@ -178,6 +178,7 @@ void LodManager::fitBudget(std::span<const LodInstance> instances, std::span<con
         take(TS_LOD_MIDDLE, middle);
         const detail::Admission far = admitTier(TS_LOD_FAR, cap, farLimits, fades);
         take(TS_LOD_FAR, far);
+        // The rest in view are impostors: that tier has no budget.
         p.cuts = {near.cut, middle.cut, far.cut, fades ? 1.0f : 0.0f};
         p.levels.x = cap;
         // Fading copies of budget demotions that do not fit: demote at once.
@@ -189,7 +190,7 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
     struct Chunk {
         std::array<std::vector<LodDraw>, kTierCount> tiers;
         std::array<LodTierCount, kTierCount> counts{};
-        uint32_t inView = 0, dropped = 0, demoted = 0, changes = 0;
+        uint32_t inView = 0, pastFar = 0, demoted = 0, changes = 0;
         std::array<uint32_t, kTierCount> hidden{};
     };
     const uint32_t count = uint32_t(instances.size());
@@ -207,11 +208,8 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
             if (seen.candidate == TS_LOD_NONE) continue;
             ++chunk.inView;
             const uint32_t tier = shader::tsLodStateTier(next);
-            if (tier == TS_LOD_NONE) {
-                ++chunk.dropped;
-                continue;
-            }
             if (tier != seen.candidate) ++chunk.demoted;
+            if (tier == TS_LOD_IMPOSTOR && seen.candidate != TS_LOD_IMPOSTOR) ++chunk.pastFar;
             const uint32_t last = shader::tsLodStateTier(old);
             if (last != TS_LOD_NONE && last != tier) ++chunk.changes;
             const LodCharacter& character = characters[instance.character];
@@ -223,9 +221,10 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
                 LodTierCount& c = chunk.counts[t];
                 ++c.instances;
                 if (share < 1.0f) ++c.fading;
-                c.triangles += near  ? nearTriangles(seen.pixels, character, p.levels.x)
+                c.triangles += near                 ? nearTriangles(seen.pixels, character, p.levels.x)
                                : t == TS_LOD_MIDDLE ? character.middleTriangles
-                                                    : character.farTriangles;
+                               : t == TS_LOD_FAR    ? character.farTriangles
+                                                    : 2u;
             };
             draw(tier, coverage, false);
             if (shader::tsLodStateFade(next) > 0u) draw(shader::tsLodStatePrevious(next), 1.0f - coverage, true);
@@ -241,7 +240,7 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
         }
         f.inView += chunk.inView;
         for (uint32_t t = 0; t < kTierCount; ++t) f.hidden[t] += chunk.hidden[t];
-        f.dropped += chunk.dropped;
+        f.pastFarBudget += chunk.pastFar;
         f.budgetDemoted += chunk.demoted;
         f.tierChanges += chunk.changes;
     }

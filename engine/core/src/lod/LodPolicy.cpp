@@ -52,6 +52,9 @@ Status LodPolicy::validate() const {
     if (!(farPixels > 0.0f) || !(farPixels <= nearPixels))
         return bad("the far threshold must be positive and at most the near threshold (" + std::to_string(nearPixels) +
                    " px)");
+    if (!(impostorPixels >= 0.0f) || !(impostorPixels <= farPixels))
+        return bad("the impostor threshold must be at least 0 and at most the far threshold (" +
+                   std::to_string(farPixels) + " px)");
     if (!(hysteresis >= 0.0f && hysteresis < 1.0f)) return bad("the hysteresis must be in [0, 1)");
     if (fadeFrames > TS_LOD_MAX_FADE_FRAMES)
         return bad("a cross-fade lasts at most " + std::to_string(TS_LOD_MAX_FADE_FRAMES) + " frames");
@@ -60,8 +63,6 @@ Status LodPolicy::validate() const {
     if (!(fixedLevel >= 0.0f && fixedLevel <= 64.0f)) return bad("a fixed level must be in [1, 64] (0: from the size)");
     if (budget.maxTessellatedTriangles == 0)
         return bad("a tessellated-triangle budget of zero draws nothing tessellated; give at least one cage's worth");
-    if (budget.maxNearInstances == 0 && budget.maxMiddleInstances == 0 && budget.maxFarInstances == 0)
-        return bad("a budget of zero instances in every tier draws nothing");
     return {};
 }
 

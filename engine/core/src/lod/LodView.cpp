@@ -19,6 +19,7 @@ const char* toString(Tier tier) {
     case Tier::Near: return "near";
     case Tier::Middle: return "middle";
     case Tier::Far: return "far";
+    case Tier::Impostor: return "impostor";
     }
     return "?";
 }

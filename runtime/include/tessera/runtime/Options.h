@@ -173,6 +173,7 @@ struct Options {
     /// in projected pixels), --lod-budget T (tessellated triangles per
     /// frame), --lod-near-max N (tessellated instances per frame).
     std::optional<float> lodNear, lodFar;
+    std::optional<float> lodImpostor;          ///< --lod-impostor PX: impostors below PX (0: only past the far budget)
     std::optional<uint64_t> lodBudget;
     std::optional<uint32_t> lodNearMax;
     std::optional<uint32_t> lodMiddleMax;      ///< --lod-middle-max N: untessellated cages per frame

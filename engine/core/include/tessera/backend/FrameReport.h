@@ -23,12 +23,11 @@ struct FrameReport {
     /// Triangles the backend submitted (before clipping), as it computes them.
     uint64_t trianglesSubmitted = 0;
     /// Crowd instances drawn per LOD tier (near, middle, far, impostor;
-    /// fading copies included) and their triangles before tessellation (the
-    /// near tier's cage triangles; what tessellation made of them is in the
-    /// pass's pipeline statistics; two per impostor card), as the GPU's
-    /// lists counted them: a backend reads its counters back when the frame
-    /// slot comes round again, so they describe an earlier frame of the
-    /// same crowd.
+    /// fading copies included) and their triangles before tessellation (the near tier's
+    /// cage triangles; what tessellation made of them is in the pass's
+    /// pipeline statistics), as the GPU's lists counted them: a backend
+    /// reads its counters back when the frame slot comes round again, so
+    /// they describe an earlier frame of the same crowd.
     uint32_t crowdInstances[TS_LOD_TIERS] = {};
     uint64_t crowdTriangles[TS_LOD_TIERS] = {};
     /// Device bytes of the crowds drawn this frame: meshes, clips, lists,

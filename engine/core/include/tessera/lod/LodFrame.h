@@ -11,7 +11,7 @@
 
 namespace tessera::lod {
 
-enum class Tier : uint32_t { Near = TS_LOD_NEAR, Middle = TS_LOD_MIDDLE, Far = TS_LOD_FAR };
+enum class Tier : uint32_t { Near = TS_LOD_NEAR, Middle = TS_LOD_MIDDLE, Far = TS_LOD_FAR, Impostor = TS_LOD_IMPOSTOR };
 inline constexpr uint32_t kTierCount = TS_LOD_TIERS;
 const char* toString(Tier tier);
 
@@ -32,7 +32,7 @@ struct LodDraw {
 struct LodTierCount {
     uint32_t instances = 0; ///< draws, fading copies included
     uint32_t fading = 0;    ///< of which cross-fade copies (either side)
-    uint64_t triangles = 0; ///< after tessellation
+    uint64_t triangles = 0; ///< after tessellation (an impostor: its card's two)
 };
 
 struct LodFrame {
@@ -45,7 +45,9 @@ struct LodFrame {
     /// Instances in the frustum that the terrain hides (tsLodBehindTerrain),
     /// by the tier their size would have taken.
     std::array<uint32_t, kTierCount> hidden{};
-    uint32_t dropped = 0;       ///< in view but beyond the far tier's budget
+    /// In view and drawn as impostors only because the far tier's budget
+    /// was spent (their size asked for a mesh).
+    uint32_t pastFarBudget = 0;
     uint32_t budgetDemoted = 0; ///< drawn coarser than their size asks, for the budget
     uint32_t tierChanges = 0;   ///< instances whose tier changed this frame
 };

@@ -22,8 +22,9 @@ struct LodBudget {
     uint64_t maxTessellatedTriangles = 24'000'000;
     /// Instances drawn as their untessellated cage (the middle tier).
     uint32_t maxMiddleInstances = 16384;
-    /// Instances drawn with the far mesh; the smallest beyond it are not
-    /// drawn (kUnlimited: all).
+    /// Instances drawn with the far mesh; the smallest beyond it are drawn
+    /// as impostors (kUnlimited: all). The impostor tier has no budget: a
+    /// card costs two triangles and a few pixels.
     uint32_t maxFarInstances = kUnlimited;
 };
 
@@ -39,6 +40,10 @@ struct LodPolicy {
     /// the far mesh; in between, the middle tier.
     float nearPixels = 192.0f;
     float farPixels = 64.0f;
+    /// Below this many pixels an instance is drawn as an impostor (a card
+    /// from its baked views, shaders/CrowdImpostor.h); 0: only when the far
+    /// budget is spent. At most `farPixels`.
+    float impostorPixels = 32.0f;
     /// An instance goes back to a coarser tier only this fraction below the
     /// threshold it crossed, so one on a boundary does not flicker.
     float hysteresis = 0.15f;

@@ -16,7 +16,8 @@
 //   4. the frame budget, which the CPU turns into pixel cuts and a level cap
 //      per frame (lod::LodManager): a near candidate below the near cut is
 //      drawn in the middle tier, a middle candidate below the middle cut in
-//      the far tier, a far one below the far cut not at all;
+//      the far tier, a far one below the far cut as an impostor (which has
+//      no budget: every instance in view is drawn);
 //   5. the cross-fade: a tier change draws the instance in both tiers for
 //      `fadeFrames` frames with complementary dither masks.
 // The instance's state between frames is one uint (tier, previous tier,
@@ -45,7 +46,8 @@ struct CrowdLodParams {
     vec4 eye;        // xyz: camera position, w: pixels per radian (viewport height / (2 tan(fov / 2)))
     vec4 thresholds; // x: near threshold (px), y: far threshold (px), z: hysteresis fraction, w: fade frames
     vec4 cuts;       // x: near cut, y: middle cut, z: far cut (px), w: 1 = budget demotions fade
-    vec4 levels;     // x: level cap of the near tier, y: fixed level (0: from the size), zw: unused
+    vec4 levels;     // x: level cap of the near tier, y: fixed level (0: from the size), z: impostor threshold
+                     // (px; 0: no impostors by size), w: unused
     vec4 occluder;   // the horizon's grid: xy its min corner (world x, z), z: cell side (m), w: cells per
                      // side (0: no horizon occlusion)
 };
@@ -142,23 +144,27 @@ TS_INLINE float tsLodPixels(vec4 sphere, CrowdLodParams p) {
 }
 
 /// The tier the thresholds give, with hysteresis against `previous` (the
-/// instance's tier last frame, or TS_LOD_NONE).
+/// instance's tier last frame, or TS_LOD_NONE). Below the impostor
+/// threshold (levels.z; 0: none) a creature takes the impostor tier.
 TS_INLINE uint tsLodCandidate(float pixels, uint previous, CrowdLodParams p) {
     const float keep = 1.0f - p.thresholds.z;
     const bool wasNear = previous == TS_LOD_NEAR;
     const bool wasFiner = previous <= TS_LOD_MIDDLE;
+    const bool wasMesh = previous <= TS_LOD_FAR;
     if (pixels >= p.thresholds.x || (wasNear && pixels >= p.thresholds.x * keep)) return TS_LOD_NEAR;
     if (pixels >= p.thresholds.y || (wasFiner && pixels >= p.thresholds.y * keep)) return TS_LOD_MIDDLE;
-    return TS_LOD_FAR;
+    if (pixels >= p.levels.z || (wasMesh && pixels >= p.levels.z * keep)) return TS_LOD_FAR;
+    return TS_LOD_IMPOSTOR;
 }
 
-/// The tier after the budget's cuts (TS_LOD_NONE: dropped, the far tier
-/// being full).
+/// The tier after the budget's cuts: a candidate below its tier's cut goes
+/// to the next coarser tier; the impostor tier has no budget, so every
+/// instance in view is drawn (the budgets choose how, never whether).
 TS_INLINE uint tsLodTier(float pixels, uint candidate, CrowdLodParams p) {
     if (candidate == TS_LOD_NEAR && pixels >= p.cuts.x) return TS_LOD_NEAR;
     if (candidate <= TS_LOD_MIDDLE && pixels >= p.cuts.y) return TS_LOD_MIDDLE;
-    if (pixels >= p.cuts.z) return TS_LOD_FAR;
-    return TS_LOD_NONE;
+    if (candidate <= TS_LOD_FAR && pixels >= p.cuts.z) return TS_LOD_FAR;
+    return TS_LOD_IMPOSTOR;
 }
 
 /// The next state of an instance (`state`: last frame's). Out of view: none.
@@ -171,7 +177,6 @@ TS_INLINE uint tsLodUpdate(uint state, vec4 sphere, CrowdLodParams p TS_LOD_OCCL
     const float pixels = tsLodPixels(sphere, p);
     const uint candidate = tsLodCandidate(pixels, last, p);
     const uint tier = tsLodTier(pixels, candidate, p);
-    if (tier == TS_LOD_NONE) return tsLodStateNone();
     if (last == TS_LOD_NONE) return tsLodState(tier, tier, 0u);
     const uint fadeFrames = uint(p.thresholds.w);
     if (tier != last) {
