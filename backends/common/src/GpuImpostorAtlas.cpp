@@ -61,7 +61,8 @@ gpu::Image makeImage(gpu::Device& device, uint32_t side, uint32_t layers, VkForm
     desc.width = side;
     desc.height = side;
     desc.format = format;
-    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    // Copied from, too: the tests read the layers back.
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     desc.mipLevels = TS_IMPOSTOR_MIPS;
     // Always TS_IMPOSTOR_PHASES layers or more: the view is 2D_ARRAY, as the
     // shaders declare it.

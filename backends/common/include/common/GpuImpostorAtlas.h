@@ -33,6 +33,9 @@ public:
 
     VkDescriptorImageInfo albedo() const;
     VkDescriptorImageInfo normal() const;
+    /// The images themselves (for the tests' readback).
+    const gpu::Image& albedoImage() const { return mAlbedo; }
+    const gpu::Image& normalImage() const { return mNormal; }
     /// Device bytes of both images, every mip.
     uint64_t bytes() const { return mBytes; }
 
