@@ -25,6 +25,7 @@ Result<lod::LodPolicy> lodPolicyFor(const Options& options, lod::DeviceClass dev
     if (options.lodBudget) policy.budget.maxTessellatedTriangles = *options.lodBudget;
     if (options.lodNearMax) policy.budget.maxNearInstances = *options.lodNearMax;
     if (options.lodMiddleMax) policy.budget.maxMiddleInstances = *options.lodMiddleMax;
+    if (options.lodFarMax) policy.budget.maxFarInstances = *options.lodFarMax;
     if (options.lodEdge) policy.targetEdgePixels = *options.lodEdge;
     if (options.lodFade) policy.fadeFrames = *options.lodFade;
     if (options.lodFarTriangles) policy.farMeshTriangles = *options.lodFarTriangles;
