@@ -145,7 +145,10 @@ void bakeLayer(const BakeInputs& in, uint32_t layer, ImpostorAtlas& atlas) {
 } // namespace
 
 ImpostorSphere impostorSphere(const CharacterAsset& asset) {
-    const scene::Aabb box = animatedBounds(asset);
+    return impostorSphere(animatedBounds(asset));
+}
+
+ImpostorSphere impostorSphere(const scene::Aabb& box) {
     if (box.isEmpty()) return {};
     const glm::vec3 centre = box.center();
     return {centre.y, glm::length(box.extents()) + glm::length(glm::vec2(centre.x, centre.z))};

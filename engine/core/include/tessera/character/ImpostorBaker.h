@@ -10,6 +10,7 @@
 #include "tessera/character/BakedAnimation.h"
 #include "tessera/character/CharacterAsset.h"
 #include "tessera/character/ImpostorAtlas.h"
+#include "tessera/scene/Aabb.h"
 
 #include <cstdint>
 
@@ -36,6 +37,9 @@ struct ImpostorSphere {
     float radius = 0.0f;
 };
 ImpostorSphere impostorSphere(const CharacterAsset& asset);
+/// The same from the box animatedBounds(asset) returned (for a caller that
+/// has it already).
+ImpostorSphere impostorSphere(const scene::Aabb& animatedBox);
 
 /// The layers an atlas of a character with `clips` clips has:
 /// clips * TS_IMPOSTOR_PHASES, or TS_IMPOSTOR_PHASES (the rest pose) with none.
