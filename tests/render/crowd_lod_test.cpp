@@ -18,7 +18,7 @@ using namespace tessera::test;
 
 namespace {
 
-constexpr std::array<const char*, 3> kTiers = {"near", "middle", "far"};
+constexpr std::array<const char*, 4> kTiers = {"near", "middle", "far", "impostor"};
 // 2.4 m above the ground a quarter of a kilometre from the crowd, looking at
 // it over a ridge 30 m above both (the small terrain): the ridge's patches'
 // lowest heights hide about 700 of the 2,000 agents.
@@ -39,7 +39,7 @@ TierRun runTiers(const std::string& backend, const std::string& name, const std:
                                      "--frames", "12",    "--width",      "480",   "--height",    "270",
                                      "--validation", "--crowd-tiers", json,
                                      // Thresholds for the small frame, so every tier is seen.
-                                     "--lod-near", "64", "--lod-far", "24",
+                                     "--lod-near", "64", "--lod-far", "24", "--lod-impostor", "12",
                                      // No craters under the views: the tiers depend only on the camera.
                                      "--meteors", "0"};
     args.insert(args.end(), view.begin(), view.end());
@@ -92,7 +92,7 @@ TEST_P(CrowdLodBinning, GpuBinningEqualsTheCpuReference) {
         {"across", {"--orbit-distance", "14"}},
         {"away", {"--camera", "0,900,0,0,80"}},
         {"behindHills", {"--camera", std::string(kBehindHills)}}};
-    std::array<size_t, 3> seen{};
+    std::array<size_t, kTiers.size()> seen{};
     for (const auto& [name, flags] : views) {
         SCOPED_TRACE(name);
         const TierRun run = runTiers(backend, name, flags);
