@@ -107,6 +107,7 @@ Status interpret(const cli::CommandLine& line, const DemoFlagText& t, Options& o
     }
     if (given("--lod-near-max")) o.lodNearMax = t.lodNearMax;
     if (given("--lod-middle-max")) o.lodMiddleMax = t.lodMiddleMax;
+    if (given("--lod-far-max")) o.lodFarMax = t.lodFarMax;
     if (given("--lod-fade")) o.lodFade = t.lodFade;
     if (given("--lod-edge")) o.lodEdge = t.lodEdge;
     if (given("--lod-far-triangles")) o.lodFarTriangles = t.lodFarTriangles;

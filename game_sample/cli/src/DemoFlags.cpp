@@ -97,6 +97,9 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
     count("--lod-middle-max", t.lodMiddleMax, 0, 10000000, "N",
           "at most N characters drawn in the middle tier a frame, beyond which the smallest take the far "
           "mesh, never one at or above the far threshold (default 16384 on a GPU, 64 on lavapipe)");
+    count("--lod-far-max", t.lodFarMax, 0, UINT32_MAX, "N",
+          "at most N characters drawn with the far mesh a frame, beyond which the smallest are drawn as impostors "
+          "(default: unlimited on a GPU, 3000 on lavapipe)");
     count("--lod-fade", t.lodFade, 0, TS_LOD_MAX_FADE_FRAMES, "N",
           "frames a tier change cross-fades over (dithered; default 8 on a GPU, 4 on lavapipe, 0: switch at once, at most "
           "63)");

@@ -3,9 +3,14 @@
 #include "world/ContentLocator.h"
 #include "tessera/assets/GltfLoader.h"
 #include "tessera/character/AnimatedBounds.h"
+#include "tessera/character/ImpostorBaker.h"
+#include "tessera/character/ImpostorFile.h"
+#include "tessera/core/Log.h"
 #include "tessera/profiler/CpuScope.h"
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 
 #include <glm/geometric.hpp>
 
@@ -20,6 +25,44 @@ float meanEdgeLength(const character::CageMesh& cage) {
             sum += glm::distance(cage.vertices[cage.indices[t + e]].position,
                                  cage.vertices[cage.indices[t + (e + 1) % 3]].position);
     return n ? float(sum / double(n)) : 0.0f;
+}
+
+// The impostor file the content build writes beside a character: its path
+// with the extension .impostor, for .glb and .gltf files; empty otherwise.
+std::filesystem::path impostorFileOf(const std::string& file) {
+    std::filesystem::path path(file);
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".glb" && extension != ".gltf") return {};
+    return path.replace_extension(".impostor");
+}
+
+// Whether `atlas` (read from `path`) was baked from `entry` as it loaded:
+// the file checks the layout itself; the layers follow the clips and the
+// sphere follows the animated box, so a file left from another version of
+// the character is found stale.
+Status matches(const character::ImpostorAtlas& atlas, const CrowdAsset& entry, const std::filesystem::path& path) {
+    const uint32_t layers = character::impostorLayerCount(uint32_t(entry.asset.clips.size()));
+    if (atlas.layers != layers)
+        return fail(path.string(), ": ", std::to_string(atlas.layers), " layers, the character's ",
+                    std::to_string(entry.asset.clips.size()), " clips need ", std::to_string(layers));
+    const character::ImpostorSphere sphere = character::impostorSphere(entry.box);
+    if (atlas.centreY != sphere.centreY || atlas.radius != sphere.radius)
+        return fail(path.string(), ": framed for another sphere than the character's (a stale file)");
+    return {};
+}
+
+character::ImpostorAtlas loadImpostors(const CrowdAsset& entry) {
+    TESSERA_CPU_SCOPE("load.impostors");
+    const std::filesystem::path path = impostorFileOf(entry.file);
+    std::error_code ec;
+    if (!path.empty() && std::filesystem::exists(path, ec)) {
+        auto read = character::readImpostorFile(path);
+        Status usable = read ? matches(read.value(), entry, path) : Status(read.error());
+        if (usable) return std::move(read.value());
+        log::warning(usable.error().message + "; baking the impostors at load instead");
+    }
+    return character::bakeImpostors(entry.asset);
 }
 
 } // namespace
@@ -40,6 +83,7 @@ Status CharacterAssets::add(const std::string& file) {
     if (entry.asset.cage.indices.empty()) return fail(file, ": has no triangles to draw");
     entry.box = character::animatedBounds(entry.asset);
     entry.meanEdge = meanEdgeLength(entry.asset.cage);
+    entry.impostor = loadImpostors(entry);
     mAssets.push_back(std::move(entry));
     return {};
 }

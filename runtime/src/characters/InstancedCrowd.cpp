@@ -74,9 +74,15 @@ backend::CrowdDesc InstancedCrowd::desc(const CharacterAssets& assets, uint32_t 
         cost.middleTriangles = mMiddleIndices[i].empty() ? cost.cageTriangles : uint32_t(mMiddleIndices[i].size() / 3);
         cost.farTriangles = mFarMeshes[i]->triangleCount();
         mCosts.push_back(cost);
-        mCharacters.push_back(
-            {assets.handle(i), &asset.asset.cage, mFarMeshes[i], mMiddleIndices[i], mFarCasterIndices[i],
-             nullptr /* impostor: from the assets (imp-bake) */, cost.levelPerPixel});
+        backend::CrowdCharacterDesc character;
+        character.character = assets.handle(i);
+        character.cage = &asset.asset.cage;
+        character.farMesh = mFarMeshes[i];
+        character.middleIndices = mMiddleIndices[i];
+        character.farCasterIndices = mFarCasterIndices[i];
+        character.impostor = &asset.impostor;
+        character.levelPerPixel = cost.levelPerPixel;
+        mCharacters.push_back(character);
     }
     const uint32_t nearSlots = policy.budget.maxNearInstances;
     backend::CrowdDesc desc;

@@ -19,12 +19,13 @@ Result<lod::LodPolicy> lodPolicyFor(const Options& options, lod::DeviceClass dev
     if (options.lodNear) policy.nearPixels = *options.lodNear;
     if (options.lodFar) policy.farPixels = *options.lodFar;
     if (options.lodImpostor) policy.impostorPixels = *options.lodImpostor;
-    // A far threshold given below the default impostor threshold keeps
-    // impostors below it (the user asked for far meshes down to that size).
-    else if (options.lodFar) policy.impostorPixels = std::min(policy.impostorPixels, policy.farPixels);
+    // A far threshold given alone keeps the far tier's band: impostors from
+    // half of it at most (the defaults' ratio, 32 of 64 px).
+    else if (options.lodFar) policy.impostorPixels = std::min(policy.impostorPixels, 0.5f * policy.farPixels);
     if (options.lodBudget) policy.budget.maxTessellatedTriangles = *options.lodBudget;
     if (options.lodNearMax) policy.budget.maxNearInstances = *options.lodNearMax;
     if (options.lodMiddleMax) policy.budget.maxMiddleInstances = *options.lodMiddleMax;
+    if (options.lodFarMax) policy.budget.maxFarInstances = *options.lodFarMax;
     if (options.lodEdge) policy.targetEdgePixels = *options.lodEdge;
     if (options.lodFade) policy.fadeFrames = *options.lodFade;
     if (options.lodFarTriangles) policy.farMeshTriangles = *options.lodFarTriangles;

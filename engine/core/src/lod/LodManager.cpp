@@ -72,8 +72,9 @@ const LodFrame& LodManager::update(std::span<const LodInstance> instances, std::
     p.occluder = occlusion ? view.occluderGrid : glm::vec4(0.0f);
     mOccluders = occlusion ? view.occluders.data() : nullptr;
     p.thresholds = {mPolicy.nearPixels, mPolicy.farPixels, mPolicy.hysteresis, float(mPolicy.fadeFrames)};
-    p.cuts = {0.0f, 0.0f, 0.0f, mPolicy.fadeFrames > 0 ? 1.0f : 0.0f};
-    p.levels = {std::max(1.0f, view.maxLevel), mPolicy.fixedLevel, mPolicy.impostorPixels, 0.0f};
+    p.cuts = {0.0f, 0.0f, 0.0f, 0.0f}; // fitBudget sets them
+    p.levels = {std::max(1.0f, view.maxLevel), mPolicy.fixedLevel, mPolicy.impostorPixels,
+                1.0f / (1.0f - mPolicy.hysteresis)};
 
     uint32_t maxId = 0;
     for (const LodInstance& instance : instances) maxId = std::max(maxId, instance.id);
@@ -128,7 +129,11 @@ void LodManager::fitBudget(std::span<const LodInstance> instances, std::span<con
             const bool wasHere = shader::tsLodStateTier(state) == tier;
             const bool candidate = seen.tier == TS_LOD_NONE && seen.candidate <= tier;
             if (candidate) {
-                items.push_back({seen.pixels, instances[i].id, i, cost, wasHere, continuesFadeFrom(state, tier)});
+                // Ranked as the GPU's cut compares it (tsLodTier).
+                const float rank = tier == TS_LOD_FAR
+                                       ? shader::tsLodFarRank(seen.pixels, shader::tsLodStateTier(state), p)
+                                       : seen.pixels;
+                items.push_back({rank, instances[i].id, i, cost, wasHere, continuesFadeFrom(state, tier)});
             } else if ((wasHere && seen.tier != tier) || continuesFadeFrom(state, tier)) {
                 // Leaving the tier by its size, or for a finer one: a fading copy.
                 forcedCost += cost;
@@ -143,6 +148,12 @@ void LodManager::fitBudget(std::span<const LodInstance> instances, std::span<con
     };
     auto take = [&](uint32_t tier, const detail::Admission& admission) {
         for (uint32_t k = 0; k < admission.admitted; ++k) mSeen[items[k].index].tier = tier;
+    };
+    // Incumbents of the tier `admission` leaves out (items as it ordered them).
+    auto demotedIncumbents = [&](const detail::Admission& admission) {
+        uint32_t n = 0;
+        for (size_t k = admission.admitted; k < items.size(); ++k) n += items[k].copyIfDemoted;
+        return n;
     };
     auto resetTiers = [&] {
         for (Seen& seen : mSeen) seen.tier = TS_LOD_NONE;
@@ -176,10 +187,29 @@ void LodManager::fitBudget(std::span<const LodInstance> instances, std::span<con
         // may hold more than its budget (docs/CROWD.md 6.2, "Fallbacks").
         if (middle.cut > mPolicy.farPixels) detail::admitDownTo(items, mPolicy.farPixels, middle);
         take(TS_LOD_MIDDLE, middle);
-        const detail::Admission far = admitTier(TS_LOD_FAR, cap, farLimits, fades);
+        // A full far tier (thousands of agents of nearly one size) admits a
+        // newcomer larger than an incumbent only by demoting it, and a fading
+        // demotion's copy keeps its place: with fades the cut would fall
+        // below every incumbent the newcomer outranks, demoting them all.
+        // Demote at once there when fading would demote more.
+        detail::Admission far = admitTier(TS_LOD_FAR, cap, farLimits, fades);
+        bool farFades = fades;
+        if (fades) {
+            const uint32_t fadingDemotions = demotedIncumbents(far);
+            detail::Admission instant = admitTier(TS_LOD_FAR, cap, farLimits, false);
+            if (demotedIncumbents(instant) < fadingDemotions) {
+                far = instant;
+                farFades = false;
+            } else {
+                far = admitTier(TS_LOD_FAR, cap, farLimits, true);
+            }
+        }
         take(TS_LOD_FAR, far);
         // The rest in view are impostors: that tier has no budget.
-        p.cuts = {near.cut, middle.cut, far.cut, fades ? 1.0f : 0.0f};
+        const uint32_t fadeBits = fades ? ((1u << TS_LOD_NEAR) | (1u << TS_LOD_MIDDLE) |
+                                           (farFades ? 1u << TS_LOD_FAR : 0u) | (1u << TS_LOD_IMPOSTOR))
+                                        : 0u;
+        p.cuts = {near.cut, middle.cut, far.cut, float(fadeBits)};
         p.levels.x = cap;
         // Fading copies of budget demotions that do not fit: demote at once.
         if (!fades || (near.fits && middle.fits && far.fits)) break;

@@ -1,11 +1,13 @@
 #pragma once
 /// @file CharacterAssets.h
 /// The characters a scene draws, loaded once: each asset with what drawing it
-/// needs (compression box, mean edge) and, once uploaded, its backend handle.
-/// Shared by the characters scene and the crowd scene.
+/// needs (compression box, mean edge, the crowd's impostor atlas) and, once
+/// uploaded, its backend handle. Shared by the characters scene and the
+/// crowd scene.
 
 #include "tessera/backend/CharacterDesc.h"
 #include "tessera/character/CharacterAsset.h"
+#include "tessera/character/ImpostorAtlas.h"
 #include "tessera/core/Result.h"
 #include "tessera/scene/Aabb.h"
 
@@ -22,6 +24,11 @@ struct CrowdAsset {
     character::CharacterAsset asset;
     scene::Aabb box;       ///< compression box (character::animatedBounds)
     float meanEdge = 0.0f; ///< mean cage edge length, model units: drives the level
+    /// The crowd's impostor tier's images: the content build's
+    /// `<file without .glb/.gltf>.impostor` when it is this asset's (this
+    /// build's layout, a layer per phase of each clip, the same sphere),
+    /// else baked at load (character::bakeImpostors).
+    character::ImpostorAtlas impostor;
 };
 
 class CharacterAssets {
@@ -29,8 +36,9 @@ public:
     /// How many generated creatures the build makes (content/characters/froblin_1..3.glb).
     static constexpr uint32_t kFroblinSeeds = 3;
 
-    /// Loads `file` (any glTF the loader accepts). A file that cannot be used
-    /// is an error naming it.
+    /// Loads `file` (any glTF the loader accepts) and its impostor atlas. A
+    /// file that cannot be used is an error naming it; an impostor file
+    /// beside it that cannot be used is a warning naming it, and a bake.
     Status add(const std::string& file);
     /// Loads the first `count` generated creatures (at most kFroblinSeeds)
     /// from the content directory (--content, see locateContent).

@@ -28,7 +28,9 @@ public:
 
     /// What Backend::createCrowd needs (the assets' handles must be bound),
     /// for up to `maxAgents` agents, with the policy's near slots and edge
-    /// target (the near tier's level per pixel, the same on CPU and GPU).
+    /// target (the near tier's level per pixel, the same on CPU and GPU) and
+    /// each creature's impostor atlas (CrowdAsset::impostor; `assets` must
+    /// outlive createCrowd).
     backend::CrowdDesc desc(const CharacterAssets& assets, uint32_t maxAgents, const lod::LodPolicy& policy);
 
     /// The global baked clip of asset `asset`'s clip `clip` (-1: rest pose).

@@ -177,6 +177,7 @@ struct Options {
     std::optional<uint64_t> lodBudget;
     std::optional<uint32_t> lodNearMax;
     std::optional<uint32_t> lodMiddleMax;      ///< --lod-middle-max N: untessellated cages per frame
+    std::optional<uint32_t> lodFarMax;         ///< --lod-far-max N: far meshes per frame (the rest: impostors)
     std::optional<float> lodEdge;              ///< --lod-edge PX: the near tier's tessellated edge in pixels
     std::optional<uint32_t> lodFade;           ///< --lod-fade N: cross-fade frames (0: instant)
     std::optional<uint32_t> lodFarTriangles;   ///< --lod-far-triangles N: the far mesh's triangles at most

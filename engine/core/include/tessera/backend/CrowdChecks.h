@@ -10,7 +10,9 @@
 namespace tessera::backend {
 
 /// createCrowd's input: creatures (1 to TS_CROWD_MAX_CHARACTERS, each with a
-/// far mesh whose bindings match), baked clips for every creature, sizes.
+/// far mesh whose bindings match and a complete impostor atlas with a layer
+/// per phase of each of its baked clips), baked clips for every creature,
+/// sizes.
 Status checkCrowdDesc(const CrowdDesc& desc);
 
 /// Whether one frame's instance may be drawn with a crowd of `characters`

@@ -30,6 +30,10 @@ struct ImpostorAtlas {
     std::vector<std::vector<uint8_t>> normal;
 
     bool empty() const { return size == 0 || layers == 0; }
+    /// Texels a side of a layer at mip `mip`.
+    uint32_t sizeAt(uint32_t mip) const { return size >> mip; }
+    /// Bytes of one layer of one image (albedo or normal) at mip `mip`.
+    uint64_t layerBytes(uint32_t mip) const { return uint64_t(sizeAt(mip)) * sizeAt(mip) * 4u; }
     /// Bytes of both images, every mip.
     uint64_t bytes() const;
 };

@@ -83,15 +83,23 @@ TS_INLINE vec3 tsImpostorProject(vec3 p, vec3 d, vec3 centre, float radius) {
     return vec3(0.5f + dot(q, right) / (2.0f * radius), 0.5f - dot(q, up) / (2.0f * radius), dot(q, d));
 }
 
-/// Where point (s, t) of a cell's creature square (s to the right, t down,
-/// both in [0, 1]; tsImpostorProject's) lies in a layer, in [0, 1]^2: the
-/// square fills the cell inside its TS_IMPOSTOR_BORDER margin. The cards
-/// sample through this one function. (Provisional: the baker's mapping of
-/// (s, t) to texels replaces it, so both sides use one definition.)
+/// Where cell coordinates `st` (tsImpostorProject's s and t) fall inside a
+/// cell, in mip-0 texels from the cell's top-left corner (texel centres at
+/// n + 0.5): the square [0, 1]^2 spans the CELL - 2 BORDER inner texels, so
+/// the BORDER texels round it stay empty. The baker rasterises with this
+/// mapping; a card corner's texture coordinate is tsImpostorLayerUv.
+TS_INLINE vec2 tsImpostorCellTexel(vec2 st) {
+    return vec2(float(TS_IMPOSTOR_BORDER)) + st * float(TS_IMPOSTOR_CELL - 2u * TS_IMPOSTOR_BORDER);
+}
+
+/// The texture coordinate in [0, 1]^2 of a layer (any mip level: a cell is
+/// CELL >> m texels a side at mip m, so cells stay aligned) of the point at
+/// cell coordinates `st` of cell `cell`. A card drawn over the sphere's
+/// square with st = (0, 0) at its top-left corner (towards -right, +up) and
+/// (1, 1) at its bottom-right shows the cell exactly as baked.
 TS_INLINE vec2 tsImpostorLayerUv(uvec2 cell, vec2 st) {
-    const float n = float(TS_IMPOSTOR_VIEWS), side = float(TS_IMPOSTOR_CELL);
-    const float border = float(TS_IMPOSTOR_BORDER) / side, inner = (side - 2.0f * float(TS_IMPOSTOR_BORDER)) / side;
-    return vec2((float(cell.x) + border + st.x * inner) / n, (float(cell.y) + border + st.y * inner) / n);
+    return (vec2(cell) * float(TS_IMPOSTOR_CELL) + tsImpostorCellTexel(st)) /
+           float(TS_IMPOSTOR_VIEWS * TS_IMPOSTOR_CELL);
 }
 
 /// The layer and weight of the two phases around `phase` of a clip of

@@ -45,9 +45,10 @@ struct CrowdLodParams {
     vec4 planes[6];  // world frustum planes, normals inwards (scene::Frustum's order)
     vec4 eye;        // xyz: camera position, w: pixels per radian (viewport height / (2 tan(fov / 2)))
     vec4 thresholds; // x: near threshold (px), y: far threshold (px), z: hysteresis fraction, w: fade frames
-    vec4 cuts;       // x: near cut, y: middle cut, z: far cut (px), w: 1 = budget demotions fade
+    vec4 cuts;       // x: near cut, y: middle cut, z: far cut (px; against tsLodFarRank), w: bit t set = the
+                     // budget's demotions out of tier t fade
     vec4 levels;     // x: level cap of the near tier, y: fixed level (0: from the size), z: impostor threshold
-                     // (px; 0: no impostors by size), w: unused
+                     // (px; 0: no impostors by size), w: the budgets' hold on incumbents, 1 / (1 - hysteresis)
     vec4 occluder;   // the horizon's grid: xy its min corner (world x, z), z: cell side (m), w: cells per
                      // side (0: no horizon occlusion)
 };
@@ -157,31 +158,40 @@ TS_INLINE uint tsLodCandidate(float pixels, uint previous, CrowdLodParams p) {
     return TS_LOD_IMPOSTOR;
 }
 
+/// The size the far tier's budget ranks an instance by: one already there
+/// (`last`) counts a hysteresis fraction larger (levels.w), so in a crowd of
+/// nearly equal sizes (thousands of far agents, the budget spent) the moving
+/// agents do not trade places with impostors at the cut every frame.
+TS_INLINE float tsLodFarRank(float pixels, uint last, CrowdLodParams p) {
+    return last == TS_LOD_FAR ? pixels * max(p.levels.w, 1.0f) : pixels;
+}
+
 /// The tier after the budget's cuts: a candidate below its tier's cut goes
 /// to the next coarser tier; the impostor tier has no budget, so every
 /// instance in view is drawn (the budgets choose how, never whether).
-TS_INLINE uint tsLodTier(float pixels, uint candidate, CrowdLodParams p) {
+TS_INLINE uint tsLodTier(float pixels, uint candidate, uint last, CrowdLodParams p) {
     if (candidate == TS_LOD_NEAR && pixels >= p.cuts.x) return TS_LOD_NEAR;
     if (candidate <= TS_LOD_MIDDLE && pixels >= p.cuts.y) return TS_LOD_MIDDLE;
-    if (candidate <= TS_LOD_FAR && pixels >= p.cuts.z) return TS_LOD_FAR;
+    if (candidate <= TS_LOD_FAR && tsLodFarRank(pixels, last, p) >= p.cuts.z) return TS_LOD_FAR;
     return TS_LOD_IMPOSTOR;
 }
 
 /// The next state of an instance (`state`: last frame's). Out of view: none.
 /// Coming into view: its tier at once (nothing on screen to fade from). A
 /// change of tier starts a fade; a demotion by the budget fades only when the
-/// budget leaves room for the fading copy (cuts.w).
+/// budget leaves room for the fading copies (cuts.w, per tier left).
 TS_INLINE uint tsLodUpdate(uint state, vec4 sphere, CrowdLodParams p TS_LOD_OCCLUDERS_PARAM) {
     if (!tsLodInFrustum(sphere, p) || tsLodBehindTerrain(sphere, p TS_LOD_OCCLUDERS_ARG)) return tsLodStateNone();
     const uint last = tsLodStateTier(state);
     const float pixels = tsLodPixels(sphere, p);
     const uint candidate = tsLodCandidate(pixels, last, p);
-    const uint tier = tsLodTier(pixels, candidate, p);
+    const uint tier = tsLodTier(pixels, candidate, last, p);
     if (last == TS_LOD_NONE) return tsLodState(tier, tier, 0u);
     const uint fadeFrames = uint(p.thresholds.w);
     if (tier != last) {
         const bool byBudget = tier != candidate;
-        const uint fade = (byBudget && p.cuts.w == 0.0f) ? 0u : fadeFrames;
+        const bool budgetFades = (uint(p.cuts.w) & (1u << last)) != 0u;
+        const uint fade = (byBudget && !budgetFades) ? 0u : fadeFrames;
         return tsLodState(tier, last, fade);
     }
     const uint fade = tsLodStateFade(state);

@@ -23,7 +23,7 @@ struct DemoFlagText {
     std::string hideFeatures;
     float lodNear = 0, lodFar = 0, lodImpostor = 0, lodEdge = 0, characterLevel = 0, subdivPixels = 0;
     uint64_t lodBudget = 0, subdivBudget = 0, deviceMemoryCap = 0;
-    uint32_t lodMiddleMax = 0, lodFade = 0, lodFarTriangles = 0, lodMiddleTriangles = 0, lodNearMax = 0, renderdocFrame = 0;
+    uint32_t lodMiddleMax = 0, lodFarMax = 0, lodFade = 0, lodFarTriangles = 0, lodMiddleTriangles = 0, lodNearMax = 0, renderdocFrame = 0;
     uint32_t lodFarCasterTriangles = 0;
 };
 
