@@ -21,6 +21,7 @@ struct CrowdImpostorCard {
     vec3 right;    // the card's axes in world space (unit): the baked image's
     vec3 up;       // right and up
     uvec2 cell;    // the baked view shown
+    vec4 bounds;   // its covered rectangle in cell coordinates (s0, t0, s1, t1)
     uvec2 layers;  // the layers of the phases around the instance's
     float weight;  // of layers.y
 };
@@ -43,6 +44,8 @@ CrowdImpostorCard tsCrowdImpostorCard(CrowdInstance instance) {
     vec3 d = tsCrowdImpostorToModel(frame.cameraPosition.xyz - instance.sphere.xyz, heading);
     CrowdImpostorCard card;
     card.cell = tsImpostorCell(d);
+    uint word = tsCrowdImpostorBoundsWord(min(instance.ids.y, TS_CROWD_MAX_CHARACTERS - 1u), card.cell);
+    card.bounds = tsImpostorBoundsSt(uCrowd.impostorBounds[word >> 2u][word & 3u]);
     vec3 right, up;
     tsImpostorAxes(tsImpostorCellDirection(card.cell), right, up);
     card.right = tsCrowdImpostorToWorld(right, heading);
@@ -57,10 +60,12 @@ CrowdImpostorCard tsCrowdImpostorCard(CrowdInstance instance) {
     return card;
 }
 
-// Corner `k` of `card` (s = k & 1 to the right, t = k >> 1 down, t = 0 the
-// top): its world position and, in `uv`, where it lies in a layer.
+// Corner `k` of `card`'s covered rectangle (k & 1 to the right, k >> 1
+// down, from the top left): its world position and, in `uv`, where it lies
+// in a layer. The rectangle is a part of the sphere's square, so the image
+// lands where the whole card would have put it.
 vec3 tsCrowdImpostorCorner(CrowdInstance instance, CrowdImpostorCard card, uint k, out vec2 uv) {
-    vec2 st = vec2(float(k & 1u), float(k >> 1u));
+    vec2 st = vec2((k & 1u) != 0u ? card.bounds.z : card.bounds.x, (k >> 1u) != 0u ? card.bounds.w : card.bounds.y);
     uv = tsImpostorLayerUv(card.cell, st);
     return instance.sphere.xyz + instance.sphere.w * ((2.0 * st.x - 1.0) * card.right + (1.0 - 2.0 * st.y) * card.up);
 }

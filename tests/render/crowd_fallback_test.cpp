@@ -24,6 +24,11 @@ using namespace tessera::test;
 namespace {
 
 constexpr int kWidth = 480, kHeight = 270;
+// The impostor boundary's bars (TheImpostorLooksLikeTheFarMeshAtItsThreshold):
+// measured on lavapipe (2026-11-28) 0.828 and 23.0 / 255, the card a pixel
+// taller and softer than the far mesh, its ears lost; the far mesh's own
+// fallback bar against the cage is 0.84 and 28.
+constexpr double kImpostorOverlap = 0.78, kImpostorColour = 28.0;
 const char* const kClear = "1,0,1";
 
 struct Silhouette {
@@ -99,4 +104,23 @@ TEST(CrowdFallbacks, LookLikeTheMiddleTierAtTheSizeTheyHappen) {
     // 5 m: about 53 px tall, the far threshold's size (64 px of sphere), the
     // largest the middle budget hands the far mesh.
     expectLooksLikeTheMiddleTier("middle budget spent: the far mesh", "5", farTier(cpu.farMeshTriangles));
+}
+
+// The impostor tier's boundary (issue 31, item 1): a creature at the
+// impostor threshold (32 px of bounding sphere: about 26 px tall at 10 m in
+// this frame) drawn as its card against its far mesh (GPU defaults, the
+// tier the card replaces there): silhouettes and colours.
+TEST(CrowdFallbacks, TheImpostorLooksLikeTheFarMeshAtItsThreshold) {
+    const auto far = shot("impostor_boundary_far", "10",
+                          {"--lod-near", "100000", "--lod-far", "100000", "--lod-impostor", "0"});
+    const auto card = shot("impostor_boundary_card", "10",
+                           {"--lod-near", "100000", "--lod-far", "100000", "--lod-impostor", "100000"});
+    if (!far || !card) return;
+    const Silhouette s = compare(*far, *card);
+    std::printf("[crowd fallback] impostor at its threshold: %zu creature pixels as the far mesh against %zu as the "
+                "card, silhouettes overlap %.3f, colours differ by %.1f of 255 where both show\n",
+                s.reference, s.fallback, s.overlap, s.colour);
+    EXPECT_GT(s.reference, 100u) << "the creature must show to be judged";
+    EXPECT_GE(s.overlap, kImpostorOverlap);
+    EXPECT_LE(s.colour, kImpostorColour);
 }

@@ -314,6 +314,8 @@ shader::CrowdUniforms GpuCrowd::uniforms(const backend::CrowdDrawInfo& draw, uin
     for (size_t k = 0; k < classes.size() && k < TS_EMU_TRIANGLE_CLASSES; ++k)
         u.nearPatterns[k] = glm::uvec4(classes[k].firstIndex, classes[k].indexCount, classes[k].firstCode, 0u);
     u.emulated = glm::uvec4(mTriangleStride, 0u, 0u, 0u);
+    const auto& bounds = mImpostors.bounds();
+    for (size_t w = 0; w < bounds.size(); ++w) u.impostorBounds[w / 4][w % 4] = bounds[w];
     u.counts = glm::uvec4(instanceCount, uint32_t(mCreatures.size()), mNearSlots, mMaxInstances);
     u.flags = glm::uvec4(draw.displacement ? 1u : 0u, draw.lodColors ? 1u : 0u, mNearStride, mMaxIds);
     return u;

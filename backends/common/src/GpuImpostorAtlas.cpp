@@ -55,6 +55,34 @@ Mapping mappingOf(const character::ImpostorAtlas* atlas, uint32_t side, uint32_t
     return Mapping::Clear;
 }
 
+/// The rectangle each view cell of `atlas` covers over all its layers
+/// (tsImpostorPackBounds), written at creature `creature`'s words.
+void coveredBounds(const character::ImpostorAtlas& atlas, uint32_t creature, std::span<uint32_t> out) {
+    const uint32_t side = atlas.size, cell = TS_IMPOSTOR_CELL;
+    const std::vector<uint8_t>& texels = atlas.albedo[0];
+    for (uint32_t cy = 0; cy < TS_IMPOSTOR_VIEWS; ++cy)
+        for (uint32_t cx = 0; cx < TS_IMPOSTOR_VIEWS; ++cx) {
+            uint32_t x0 = cell, y0 = cell, x1 = 0, y1 = 0;
+            for (uint32_t layer = 0; layer < atlas.layers; ++layer)
+                for (uint32_t y = 0; y < cell; ++y) {
+                    const size_t row = (size_t(layer) * side + cy * cell + y) * side + cx * cell;
+                    for (uint32_t x = 0; x < cell; ++x) {
+                        if (texels[(row + x) * 4 + 3] == 0) continue;
+                        x0 = std::min(x0, x);
+                        y0 = std::min(y0, y);
+                        x1 = std::max(x1, x + 1);
+                        y1 = std::max(y1, y + 1);
+                    }
+                }
+            // A texel to spare each side: bilinear filtering and the smaller
+            // mips spread the silhouette's edge that far.
+            const uint32_t word = shader::tsCrowdImpostorBoundsWord(creature, glm::uvec2(cx, cy));
+            out[word] = x1 == 0 ? 0u
+                                : shader::tsImpostorPackBounds(x0 > 0 ? x0 - 1 : 0, y0 > 0 ? y0 - 1 : 0,
+                                                               std::min(x1 + 1, cell), std::min(y1 + 1, cell));
+        }
+}
+
 gpu::Image makeImage(gpu::Device& device, uint32_t side, uint32_t layers, VkFormat format, const Staged& staged,
                      const char* name) {
     gpu::ImageDesc desc;
@@ -126,6 +154,8 @@ GpuImpostorAtlas GpuImpostorAtlas::create(gpu::Device& device, const backend::Cr
         }
     }
     GpuImpostorAtlas a;
+    for (uint32_t c = 0; c < creatures && c < TS_CROWD_MAX_CHARACTERS; ++c)
+        if (mappings[c] != Mapping::Clear) coveredBounds(*desc.characters[c].impostor, c, a.mBounds);
     a.mAlbedo = makeImage(device, side, layers, VK_FORMAT_R8G8B8A8_SRGB, albedo, "crowd.impostorAlbedo");
     a.mNormal = makeImage(device, side, layers, VK_FORMAT_R8G8B8A8_UNORM, normal, "crowd.impostorNormal");
     a.mSampler = gpu::Sampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, "crowd.impostorSampler");

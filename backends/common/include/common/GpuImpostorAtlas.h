@@ -15,6 +15,7 @@
 #include "tessera/gpu/Image.h"
 #include "tessera/gpu/Sampler.h"
 
+#include <array>
 #include <cstdint>
 
 namespace tessera::backends {
@@ -38,11 +39,19 @@ public:
     const gpu::Image& normalImage() const { return mNormal; }
     /// Device bytes of both images, every mip.
     uint64_t bytes() const { return mBytes; }
+    /// Per creature and view cell (tsCrowdImpostorBoundsWord) the rectangle
+    /// its layers cover there (tsImpostorPackBounds), with a texel to spare
+    /// for filtering; 0 (an empty card) where it covers nothing or has no
+    /// atlas. Goes to CrowdUniforms::impostorBounds.
+    const std::array<uint32_t, TS_CROWD_MAX_CHARACTERS * TS_IMPOSTOR_VIEWS * TS_IMPOSTOR_VIEWS>& bounds() const {
+        return mBounds;
+    }
 
 private:
     gpu::Image mAlbedo, mNormal;
     gpu::Sampler mSampler;
     uint64_t mBytes = 0;
+    std::array<uint32_t, TS_CROWD_MAX_CHARACTERS * TS_IMPOSTOR_VIEWS * TS_IMPOSTOR_VIEWS> mBounds{};
 };
 
 } // namespace tessera::backends

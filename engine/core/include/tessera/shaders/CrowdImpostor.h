@@ -102,6 +102,25 @@ TS_INLINE vec2 tsImpostorLayerUv(uvec2 cell, vec2 st) {
            float(TS_IMPOSTOR_VIEWS * TS_IMPOSTOR_CELL);
 }
 
+/// A cell's covered rectangle (over every layer of a creature), packed in
+/// one uint: x0, y0, x1, y1 in cell texels at mip 0 (0 to TS_IMPOSTOR_CELL,
+/// border included; x1 and y1 past the last covered texel), a byte each.
+/// The cards are drawn over it alone: a creature fills about a fifth of
+/// the sphere's square, and every fragment outside it would be shaded and
+/// discarded.
+TS_INLINE uint tsImpostorPackBounds(uint x0, uint y0, uint x1, uint y1) {
+    return x0 | (y0 << 8u) | (x1 << 16u) | (y1 << 24u);
+}
+
+/// The cell coordinates (s0, t0, s1, t1) of packed bounds (the inverse of
+/// tsImpostorCellTexel: outside [0, 1] where they reach into the border).
+TS_INLINE vec4 tsImpostorBoundsSt(uint packed) {
+    const float inner = float(TS_IMPOSTOR_CELL - 2u * TS_IMPOSTOR_BORDER), b = float(TS_IMPOSTOR_BORDER);
+    return vec4(float(packed & 255u) - b, float((packed >> 8u) & 255u) - b, float((packed >> 16u) & 255u) - b,
+                float(packed >> 24u) - b) /
+           inner;
+}
+
 /// The layer and weight of the two phases around `phase` of a clip of
 /// `looping` kind (as tsBakedFramePair: a looping clip wraps, any other
 /// clamps): layers first + k, first + k2 and the weight of the second.

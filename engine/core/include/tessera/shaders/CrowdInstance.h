@@ -23,6 +23,7 @@
 //   TS_BINDING_CROWD_IMPOSTOR_ALBEDO (51), _NORMAL (52)  the impostor tier's atlases
 #ifndef TESSERA_CROWD_INSTANCE_H
 #define TESSERA_CROWD_INSTANCE_H
+#include "tessera/shaders/CrowdImpostor.h"
 #include "tessera/shaders/CrowdLod.h"
 #include "tessera/shaders/SharedTypes.h"
 #include "tessera/shaders/TessTrianglePattern.h"
@@ -67,8 +68,17 @@ struct CrowdUniforms {
     // point code (vertexOffset) in the crowd's triangle pattern library.
     uvec4 nearPatterns[TS_EMU_TRIANGLE_CLASSES];
     uvec4 emulated; // x: instance stride of a near slot's draw (largest cage triangle count), yzw: 0
+    // The impostor cards' covered rectangles (tsImpostorPackBounds), per
+    // creature and view cell: word tsCrowdImpostorBoundsWord(creature, cell).
+    uvec4 impostorBounds[TS_CROWD_MAX_CHARACTERS * TS_IMPOSTOR_VIEWS * TS_IMPOSTOR_VIEWS / 4u];
 };
-TS_CHECK_SIZE(CrowdUniforms, 1120)
+TS_CHECK_SIZE(CrowdUniforms, 3168)
+
+/// Which word of CrowdUniforms::impostorBounds (as uints) holds creature
+/// `creature`'s rectangle in view cell `cell`.
+TS_INLINE uint tsCrowdImpostorBoundsWord(uint creature, uvec2 cell) {
+    return (creature * TS_IMPOSTOR_VIEWS + cell.y) * TS_IMPOSTOR_VIEWS + cell.x;
+}
 
 /// One drawn instance in a list (16 bytes).
 struct CrowdListEntry {
