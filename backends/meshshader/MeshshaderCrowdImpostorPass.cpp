@@ -49,7 +49,7 @@ void MeshshaderCrowdImpostorPass::record(gpu::FrameContext& frame, GpuCrowd& cro
         const uint32_t list = TS_LOD_IMPOSTOR * TS_CROWD_MAX_CHARACTERS + c;
         ImpostorPush push;
         push.countWord = list * TS_CROWD_ARG_DRAW_WORDS + 1;
-        push.listBase = shader::tsCrowdListBase(TS_LOD_IMPOSTOR, c, creatures, crowd.maxInstances());
+        push.listBase = crowd.listBase(frame.slot(), TS_LOD_IMPOSTOR, c);
         vkCmdPushConstants(cmd, mLayout.handle(), VK_SHADER_STAGE_MESH_BIT_EXT, 0, sizeof push, &push);
         mDevice->fn().cmdDrawMeshTasksIndirect(cmd, resources.meshArgs().handle(),
                                                VkDeviceSize(list) * sizeof(shader::CrowdMeshCommand), 1,

@@ -179,7 +179,7 @@ void MeshshaderCrowdPass::drawTier(VkCommandBuffer cmd, const gpu::PipelineLayou
         const uint32_t list = listOf(tier, c);
         TaskPush push;
         push.countWord = list * TS_CROWD_ARG_DRAW_WORDS + 1;
-        push.listBase = shader::tsCrowdListBase(tier, c, creatures, crowd.maxInstances());
+        push.listBase = crowd.listBase(crowd.lastSlot(), tier, c); // this frame's instances
         if (tier == TS_LOD_NEAR) {
             push.first = crowd.creatures()[c].cageFirstIndex;
             push.count = crowd.creatures()[c].cageTriangles;

@@ -179,6 +179,7 @@ protected:
         in.crowd = &crowd;
         in.targets = &targets;
         in.instanceCount = frame.instanceCount;
+        in.slot = frame.slot;
         in.uniforms = frame.uniforms.descriptor();
         in.instances = crowd.instancesView(frame.slot);
         in.occluders = crowd.occludersView(frame.slot);

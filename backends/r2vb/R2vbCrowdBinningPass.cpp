@@ -183,7 +183,7 @@ void R2vbCrowdBinningPass::writeArgs(VkCommandBuffer cmd, crowd::FrameInputs& in
 
     // Every word but the counts as the frame starts them, then each list's
     // count over its draw's instance count (word 1).
-    const std::vector<uint32_t>& initial = c.initialArgs();
+    const std::vector<uint32_t>& initial = c.initialArgs(in.slot);
     vkCmdUpdateBuffer(cmd, c.args().handle(), 0, initial.size() * sizeof(uint32_t), initial.data());
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
@@ -226,15 +226,18 @@ void R2vbCrowdBinningPass::extractLists(VkCommandBuffer cmd, crowd::FrameInputs&
     vkCmdEndRendering(cmd);
     crowd::renderedToCopy(cmd, entries);
 
-    // Each list's region, exactly maxInstances entries, to its own region of
-    // crowd.lists(): the R2VB step that makes them an instance stream.
+    // Each list's region, as many entries as its creature has instances
+    // (the most it can hold), to its own region of crowd.lists(): the R2VB
+    // step that makes them an instance stream.
     const uint32_t creatures = uint32_t(c.creatures().size());
     const uint32_t regionRows = t.listRegionTexels() / entries.width();
+    const auto& ranges = c.creatureRanges(in.slot);
     std::vector<VkBufferImageCopy> regions;
     for (uint32_t u = 0; u < t.listCount(); ++u) {
-        const uint32_t base = shader::tsCrowdListBase(u / creatures, u % creatures, creatures, c.maxInstances());
-        crowd::appendCopy(regions, entries, u * regionRows, c.maxInstances(),
-                          VkDeviceSize(base) * sizeof(shader::CrowdListEntry));
+        const uint32_t tier = u / creatures, creature = u % creatures;
+        if (ranges[creature].y == 0) continue;
+        crowd::appendCopy(regions, entries, u * regionRows, ranges[creature].y,
+                          VkDeviceSize(c.listBase(in.slot, tier, creature)) * sizeof(shader::CrowdListEntry));
     }
     crowd::copy(cmd, entries, c.lists(), regions);
     crowd::copiesToReaders(cmd);

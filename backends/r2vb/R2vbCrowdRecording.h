@@ -26,6 +26,7 @@ struct FrameInputs {
     GpuCrowd* crowd = nullptr;
     R2vbCrowdTargets* targets = nullptr;
     uint32_t instanceCount = 0;              ///< instances uploaded this frame
+    uint32_t slot = 0;                       ///< the frame slot (GpuCrowd's per-slot ranges and commands)
     VkDescriptorBufferInfo uniforms{};       ///< shader::CrowdUniforms
     VkBufferView instances = VK_NULL_HANDLE; ///< the frame slot's instances (RGBA32UI texels)
     VkBufferView occluders = VK_NULL_HANDLE; ///< the frame slot's horizon grid (R32F texels)

@@ -41,7 +41,6 @@ void StreamoutCrowdBinPass::record(gpu::FrameContext& frame, GpuCrowd& crowd, St
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipeline.handle());
     const VkBuffer survivors = resources.survivors().handle();
     const VkBuffer lists = crowd.lists().handle();
-    const VkDeviceSize listBytes = VkDeviceSize(crowd.maxInstances()) * kRecordBytes;
     for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier) {
         bindings.push(frame, *mLayout, tier, 0, 0);
         for (uint32_t c = 0; c < creatures; ++c) {
@@ -49,7 +48,10 @@ void StreamoutCrowdBinPass::record(gpu::FrameContext& frame, GpuCrowd& crowd, St
             // no vertices), so every result is available to copy.
             const VkDeviceSize from = ranges[c].y > 0 ? VkDeviceSize(ranges[c].x) * kRecordBytes : 0;
             vkCmdBindVertexBuffers(cmd, 0, 1, &survivors, &from);
-            const VkDeviceSize to = VkDeviceSize(shader::tsCrowdListBase(tier, c, creatures, crowd.maxInstances())) * kRecordBytes;
+            // The list's region holds the creature's instances (an empty
+            // one an entry: lists() has one to spare at its end).
+            const VkDeviceSize to = VkDeviceSize(crowd.listBase(frame.slot(), tier, c)) * kRecordBytes;
+            const VkDeviceSize listBytes = VkDeviceSize(std::max(ranges[c].y, 1u)) * kRecordBytes;
             fn.cmdBindTransformFeedbackBuffers(cmd, 0, 1, &lists, &to, &listBytes);
             const uint32_t query = resources.listQuery(tier, c);
             vkCmdBeginQuery(cmd, resources.queries(), query, 0);

@@ -47,7 +47,7 @@ void StreamoutCrowdCullPass::reset(VkCommandBuffer cmd, GpuCrowd& crowd, Streamo
                        VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_TRANSFORM_FEEDBACK_WRITE_BIT_EXT);
     // Every list starts empty (its mesh's command, no instances); a slot no
     // near entry takes stays unused (flags 0).
-    const std::vector<uint32_t>& initial = crowd.initialArgs();
+    const std::vector<uint32_t>& initial = crowd.initialArgs(crowd.lastSlot()); // this frame's, uploaded last
     vkCmdUpdateBuffer(cmd, crowd.args().handle(), 0, initial.size() * sizeof(uint32_t), initial.data());
     vkCmdFillBuffer(cmd, crowd.nearSlotRecords().handle(), 0, VK_WHOLE_SIZE, 0);
     vkCmdResetQueryPool(cmd, resources.queries(), 0, resources.queryCount());

@@ -62,7 +62,7 @@ void StreamoutCrowdNearPass::recordSlots(gpu::FrameContext& frame, GpuCrowd& cro
     fn.cmdBeginTransformFeedback(cmd, 0, 0, nullptr, nullptr);
     for (uint32_t c = 0; c < creatures; ++c) {
         const VkDeviceSize list =
-            VkDeviceSize(shader::tsCrowdListBase(TS_LOD_NEAR, c, creatures, crowd.maxInstances())) * kEntryBytes;
+            VkDeviceSize(crowd.listBase(frame.slot(), TS_LOD_NEAR, c)) * kEntryBytes;
         vkCmdBindVertexBuffers(cmd, 0, 1, &lists, &list);
         vkCmdDrawIndirect(cmd, resources.draws().handle(), resources.slotsDraw(c), 1, 0);
     }
@@ -103,7 +103,7 @@ void StreamoutCrowdNearPass::recordSkin(gpu::FrameContext& frame, GpuCrowd& crow
     for (uint32_t c = 0; c < creatures; ++c) {
         bindings.push(frame, *mLayout, TS_LOD_NEAR, c, resources.cageBase(c));
         const VkDeviceSize list =
-            VkDeviceSize(shader::tsCrowdListBase(TS_LOD_NEAR, c, creatures, crowd.maxInstances())) * kEntryBytes;
+            VkDeviceSize(crowd.listBase(frame.slot(), TS_LOD_NEAR, c)) * kEntryBytes;
         vkCmdBindVertexBuffers(cmd, 0, 1, &lists, &list);
         vkCmdDrawIndirect(cmd, resources.draws().handle(), resources.skinDraw(c), 1, 0);
     }

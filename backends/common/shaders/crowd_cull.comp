@@ -40,7 +40,8 @@ void append(uint tier, uint creature, uint instance, float coverage, bool fading
     entry.slot = slot;
     entry.coverage = coverage;
     entry.flags = (fadingOut ? 1u : 0u) | (tier << 8u);
-    crowdLists[tsCrowdListBase(tier, creature, uCrowd.counts.y, uCrowd.counts.w) + k] = entry;
+    uint first = uCrowd.creatureFirst[creature >> 2u][creature & 3u];
+    crowdLists[tsCrowdListBase(tier, first, uCrowd.counts.w) + k] = entry;
 }
 
 void main() {

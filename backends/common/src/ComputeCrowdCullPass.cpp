@@ -51,7 +51,7 @@ void ComputeCrowdCullPass::record(gpu::FrameContext& frame, GpuCrowd& crowd, Cro
             vkCmdFillBuffer(cmd, crowd.state().handle(), 0, VK_WHOLE_SIZE, shader::tsLodStateNone());
             crowd.setStateCleared();
         }
-        const std::vector<uint32_t>& initial = crowd.initialArgs();
+        const std::vector<uint32_t>& initial = crowd.initialArgs(frame.slot());
         vkCmdUpdateBuffer(cmd, crowd.args().handle(), 0, initial.size() * kWord, initial.data());
         gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                            VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,

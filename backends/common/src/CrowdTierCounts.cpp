@@ -54,7 +54,7 @@ backend::CrowdTiers readCrowdTiers(gpu::Device& device, GpuCrowd& crowd) {
     for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier)
         for (uint32_t c = 0; c < creatures; ++c) {
             const uint32_t n = std::min(listCount(args.data(), tier, c), crowd.maxInstances());
-            const uint32_t base = shader::tsCrowdListBase(tier, c, creatures, crowd.maxInstances());
+            const uint32_t base = crowd.listBase(crowd.lastSlot(), tier, c);
             for (uint32_t k = 0; k < n; ++k) tiers.instances[tier].push_back(entries[base + k].instance);
         }
     return crowd.toHostIndices(std::move(tiers));

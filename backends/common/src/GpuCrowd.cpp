@@ -137,11 +137,11 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
                                         "crowd.clips.texels");
     crowd->mState = gpu::Buffer(device, VkDeviceSize(desc.maxIds) * sizeof(uint32_t), storage | dst,
                                 gpu::MemoryUsage::GpuOnly, "crowd.lodState");
-    crowd->mLists =
-        gpu::Buffer(device,
-                    VkDeviceSize(TS_LOD_TIERS) * crowd->mCreatures.size() * desc.maxInstances *
-                        sizeof(shader::CrowdListEntry),
-                    written | vertex, gpu::MemoryUsage::GpuOnly, "crowd.tierLists");
+    // A tier's entry per instance (tsCrowdListBase), and one to spare: a
+    // binding of an empty list at the very end still has an entry's room.
+    crowd->mLists = gpu::Buffer(device,
+                                (VkDeviceSize(TS_LOD_TIERS) * desc.maxInstances + 1) * sizeof(shader::CrowdListEntry),
+                                written | vertex, gpu::MemoryUsage::GpuOnly, "crowd.tierLists");
     crowd->mArgs =
         gpu::Buffer(device, TS_CROWD_ARG_WORDS * sizeof(uint32_t), written | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                     gpu::MemoryUsage::GpuOnly, "crowd.indirect");
@@ -198,12 +198,13 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
 
     // Each list draws its creature's mesh: the cage (near), its middle
     // triangles (the cage's or fewer, over the same vertices), the far mesh
-    // or the card (impostor); firstInstance is the list's region, so the instance stream
-    // (or gl_InstanceIndex) is the entry. Indices stay local to the mesh
+    // or the card (impostor); firstInstance is the list's region (set per
+    // frame by uploadInstances), so the instance stream (or
+    // gl_InstanceIndex) is the entry. Indices stay local to the mesh
     // (vertexOffset 0): every tier fetches its vertices by local index, the
     // near tier from its compressed cage, the others from the baked vertex
     // animation.
-    std::vector<uint32_t>& args = crowd->mInitialArgs;
+    std::vector<uint32_t>& args = crowd->mMeshArgs;
     args.assign(TS_CROWD_ARG_WORDS, 0u);
     for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier)
         for (uint32_t c = 0; c < crowd->mCreatures.size(); ++c) {
@@ -213,7 +214,7 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
             cmd[1] = 0;
             cmd[2] = k.tierFirstIndex(tier);
             cmd[3] = 0;
-            cmd[4] = shader::tsCrowdListBase(tier, c, uint32_t(crowd->mCreatures.size()), desc.maxInstances);
+            cmd[4] = 0;
         }
     args[TS_CROWD_ARG_DISPATCH + 1] = 1;
     args[TS_CROWD_ARG_DISPATCH + 2] = 1;
@@ -236,6 +237,7 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
                                      dst | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUsage::GpuOnly,
                                      "crowd.casterIndirect");
     crowd->mCasterArgs.upload(std::span<const uint32_t>(casterArgs));
+    for (auto& slotArgs : crowd->mInitialArgs) slotArgs = args;
     return crowd;
 }
 
@@ -244,12 +246,15 @@ void GpuCrowd::recordCasterArgs(VkCommandBuffer cmd) {
     // and the previous frame's caster draws that read these commands.
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    // Each list's instance count and first instance (its region moves with
+    // the frame's instances).
     std::vector<VkBufferCopy> counts;
     const VkDeviceSize word = sizeof(uint32_t);
     for (uint32_t tier = TS_LOD_MIDDLE; tier <= TS_LOD_FAR; ++tier)
         for (uint32_t c = 0; c < mCreatures.size(); ++c)
-            counts.push_back({((tier * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS + 1) * word,
-                              casterArgsOffset(tier, c) + word, word});
+            for (VkDeviceSize w : {VkDeviceSize(1), VkDeviceSize(4)})
+                counts.push_back({((tier * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS + w) * word,
+                                  casterArgsOffset(tier, c) + w * word, word});
     vkCmdCopyBuffer(cmd, mArgs.handle(), mCasterArgs.handle(), uint32_t(counts.size()), counts.data());
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
@@ -286,6 +291,10 @@ uint32_t GpuCrowd::uploadInstances(uint32_t slot, std::span<const shader::CrowdI
         out[at] = instances[i];
         host[at] = i;
     }
+    std::vector<uint32_t>& args = mInitialArgs[slot];
+    for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier)
+        for (uint32_t c = 0; c < creatures; ++c)
+            args[(tier * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS + 4] = listBase(slot, tier, c);
     return uint32_t(valid.size());
 }
 
@@ -314,6 +323,7 @@ shader::CrowdUniforms GpuCrowd::uniforms(const backend::CrowdDrawInfo& draw, uin
     for (size_t k = 0; k < classes.size() && k < TS_EMU_TRIANGLE_CLASSES; ++k)
         u.nearPatterns[k] = glm::uvec4(classes[k].firstIndex, classes[k].indexCount, classes[k].firstCode, 0u);
     u.emulated = glm::uvec4(mTriangleStride, 0u, 0u, 0u);
+    for (size_t c = 0; c < mCreatures.size(); ++c) u.creatureFirst[c / 4][c % 4] = mRanges[mLastSlot][c].x;
     const auto& bounds = mImpostors.bounds();
     for (size_t w = 0; w < bounds.size(); ++w) u.impostorBounds[w / 4][w % 4] = bounds[w];
     u.counts = glm::uvec4(instanceCount, uint32_t(mCreatures.size()), mNearSlots, mMaxInstances);

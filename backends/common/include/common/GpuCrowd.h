@@ -159,9 +159,15 @@ public:
     uint32_t lastSlot() const { return mLastSlot; }
     /// The uniform block for a frame.
     shader::CrowdUniforms uniforms(const backend::CrowdDrawInfo& draw, uint32_t instanceCount) const;
-    /// The indirect commands as every frame starts them: each list's mesh,
-    /// no instances; the near dispatch empty.
-    const std::vector<uint32_t>& initialArgs() const { return mInitialArgs; }
+    /// The indirect commands as frame slot `slot`'s frame starts them (set
+    /// by uploadInstances): each list's mesh and region, no instances; the
+    /// near dispatch empty.
+    const std::vector<uint32_t>& initialArgs(uint32_t slot) const { return mInitialArgs[slot]; }
+    /// The first entry of list (tier, creature) in lists() for the frame
+    /// slot's instances (tsCrowdListBase over creatureRanges(slot)).
+    uint32_t listBase(uint32_t slot, uint32_t tier, uint32_t creature) const {
+        return shader::tsCrowdListBase(tier, mRanges[slot][creature].x, mMaxInstances);
+    }
 
     /// Whether the state still needs its first fill (TS_LOD_NONE for every id).
     bool stateCleared() const { return mStateCleared; }
@@ -191,7 +197,8 @@ private:
     std::array<std::vector<uint32_t>, gpu::kFramesInFlight> mHostIndex;
     std::array<gpu::Buffer, gpu::kFramesInFlight> mArgsReadback;
     std::array<bool, gpu::kFramesInFlight> mArgsWritten{};
-    std::vector<uint32_t> mInitialArgs;
+    std::array<std::vector<uint32_t>, gpu::kFramesInFlight> mInitialArgs;
+    std::vector<uint32_t> mMeshArgs; ///< initialArgs with every list's region at 0
     bool mStateCleared = false;
     uint32_t mLastSlot = 0;
 };

@@ -71,8 +71,12 @@ struct CrowdUniforms {
     // The impostor cards' covered rectangles (tsImpostorPackBounds), per
     // creature and view cell: word tsCrowdImpostorBoundsWord(creature, cell).
     uvec4 impostorBounds[TS_CROWD_MAX_CHARACTERS * TS_IMPOSTOR_VIEWS * TS_IMPOSTOR_VIEWS / 4u];
+    // Per creature, its first instance in the frame's instances (sorted by
+    // creature): where its lists start in each tier's region
+    // (tsCrowdListBase); word c of the array.
+    uvec4 creatureFirst[TS_CROWD_MAX_CHARACTERS / 4u];
 };
-TS_CHECK_SIZE(CrowdUniforms, 3168)
+TS_CHECK_SIZE(CrowdUniforms, 3200)
 
 /// Which word of CrowdUniforms::impostorBounds (as uints) holds creature
 /// `creature`'s rectangle in view cell `cell`.
@@ -134,10 +138,14 @@ TS_INLINE uint tsCrowdNearCommandBase(uint creature, uint slot, uint nearSlots) 
     return (creature * nearSlots + slot) * TS_CROWD_NEAR_COMMAND_WORDS;
 }
 
-/// The region of list (tier, creature) in the lists buffer of a crowd of
-/// `creatures` creatures, each list `capacity` entries (the most instances).
-TS_INLINE uint tsCrowdListBase(uint tier, uint creature, uint creatures, uint capacity) {
-    return (tier * creatures + creature) * capacity;
+/// The first entry of list (tier, creature) in the lists buffer: each tier
+/// a region of `capacity` entries (the most instances), and in it each
+/// creature's list from its first instance in the frame's instances
+/// (`creatureFirst`; they are sorted by creature). A creature's list holds
+/// at most its instances (an instance is never twice in one tier), so the
+/// lists cost a tier's entry per instance, whatever the creatures.
+TS_INLINE uint tsCrowdListBase(uint tier, uint creatureFirst, uint capacity) {
+    return tier * capacity + creatureFirst;
 }
 
 /// The corner index `i` (< TS_CROWD_IMPOSTOR_INDICES) of an impostor card
