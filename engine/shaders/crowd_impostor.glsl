@@ -50,12 +50,11 @@ CrowdImpostorCard tsCrowdImpostorCard(CrowdInstance instance) {
     tsImpostorAxes(tsImpostorCellDirection(card.cell), right, up);
     card.right = tsCrowdImpostorToWorld(right, heading);
     card.up = tsCrowdImpostorToWorld(up, heading);
-    // The instance's global clip's layers start at clip * PHASES
-    // (GpuImpostorAtlas); a looping clip's phases wrap, others clamp.
+    // The instance's global clip's first layer (GpuImpostorAtlas, in the
+    // GPU's clip record); a looping clip's phases wrap, others clamp.
     BakedClip clip = tsCrowdClip(instance.ids.z);
     uint layer0, layer1;
-    card.weight = tsImpostorPhasePair(instance.animation.x, clip.frames.w != 0u, instance.ids.z * TS_IMPOSTOR_PHASES,
-                                      layer0, layer1);
+    card.weight = tsImpostorPhasePair(instance.animation.x, clip.frames.w != 0u, uint(clip.timing.w), layer0, layer1);
     card.layers = uvec2(layer0, layer1);
     return card;
 }

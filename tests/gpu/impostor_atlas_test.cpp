@@ -1,9 +1,10 @@
 // The crowd's impostor atlases on the GPU (GpuImpostorAtlas) as the cards
-// sample them: layer ids.z * TS_IMPOSTOR_PHASES + k holds phase k of global
-// baked clip ids.z, for every creature of a crowd and at every mip level,
+// sample them: layer firstLayers()[ids.z] + k holds phase k of global baked
+// clip ids.z, for every creature of a crowd and at every mip level,
 // whichever layout its atlas has (a clip per baked clip, or its asset's
-// clips only, the rest pose not baked, as character::bakeImpostors makes
-// it), and is clear where a creature has none; under the validation layer.
+// clips only, the rest pose not baked and showing the first clip, as
+// character::bakeImpostors makes it), no layer is stored twice, and a
+// creature without an atlas has empty cards; under the validation layer.
 #include "GpuTestDevice.h"
 #include "SyntheticImpostorAtlas.h"
 
@@ -43,7 +44,16 @@ TEST(GpuImpostorAtlas, TheLayersOfAGlobalClipHoldItsPhases) {
     desc.animation = &baked;
     const backends::GpuImpostorAtlas atlas = backends::GpuImpostorAtlas::create(*device, desc);
 
-    const uint32_t layers = uint32_t(baked.clips.size()) * TS_IMPOSTOR_PHASES;
+    // Only the atlases' own layers: 3 + 2 clips of 8 phases.
+    const uint32_t layers = every.layers + assetClips.layers;
+    ASSERT_EQ(layers, 5u * TS_IMPOSTOR_PHASES);
+    const std::vector<uint32_t> firstLayers = {0, 8, 16, 24, 24, 32, 0, 0};
+    EXPECT_EQ(atlas.firstLayers(), firstLayers);
+    for (uint32_t cell = 0; cell < TS_IMPOSTOR_VIEWS * TS_IMPOSTOR_VIEWS; ++cell) {
+        const uint32_t word = shader::tsCrowdImpostorBoundsWord(2, glm::uvec2(cell % 8, cell / 8));
+        EXPECT_EQ(atlas.bounds()[word], 0u) << "the creature without an atlas has empty cards";
+        EXPECT_NE(atlas.bounds()[shader::tsCrowdImpostorBoundsWord(0, glm::uvec2(cell % 8, cell / 8))], 0u);
+    }
     const gpu::Image& image = atlas.albedoImage();
     ASSERT_EQ(image.arrayLayers(), layers);
     ASSERT_EQ(image.mipLevels(), TS_IMPOSTOR_MIPS);
@@ -72,23 +82,28 @@ TEST(GpuImpostorAtlas, TheLayersOfAGlobalClipHoldItsPhases) {
         });
     ASSERT_EQ(bytes.size(), size_t(2) * layers * 4);
 
+    auto texelAt = [&](int m, uint32_t layer) {
+        uint8_t texel[4];
+        std::memcpy(texel, bytes.data() + (size_t(m) * layers + layer) * 4, 4);
+        return glm::u8vec4(texel[0], texel[1], texel[2], texel[3]);
+    };
     for (int m = 0; m < 2; ++m)
-        for (uint32_t layer = 0; layer < layers; ++layer) {
-            const uint32_t clip = layer / TS_IMPOSTOR_PHASES, phase = layer % TS_IMPOSTOR_PHASES;
-            glm::u8vec3 expected(0);
-            if (clip < 3)
-                expected = syntheticImpostorColor(0, clip, phase);
-            else if (clip == 3) // the rest pose shows the first clip's first phase
-                expected = syntheticImpostorColor(1, 0, 0);
-            else if (clip < 6)
-                expected = syntheticImpostorColor(1, clip - 4, phase);
-            uint8_t texel[4];
-            std::memcpy(texel, bytes.data() + (size_t(m) * layers + layer) * 4, 4);
-            SCOPED_TRACE("mip " + std::to_string(mips[m]) + ", layer " + std::to_string(layer));
-            EXPECT_EQ(texel[0], expected.r);
-            EXPECT_EQ(texel[1], expected.g);
-            EXPECT_EQ(texel[2], expected.b);
-            EXPECT_EQ(texel[3] > 0, clip < 6) << "coverage " << int(texel[3]);
-        }
+        for (uint32_t clip = 0; clip < 6; ++clip)
+            for (uint32_t phase = 0; phase < TS_IMPOSTOR_PHASES; ++phase) {
+                glm::u8vec3 expected;
+                if (clip < 3)
+                    expected = syntheticImpostorColor(0, clip, phase);
+                else if (clip == 3) // the rest pose shows the first clip
+                    expected = syntheticImpostorColor(1, 0, phase);
+                else
+                    expected = syntheticImpostorColor(1, clip - 4, phase);
+                const glm::u8vec4 texel = texelAt(m, firstLayers[clip] + phase);
+                SCOPED_TRACE("mip " + std::to_string(mips[m]) + ", clip " + std::to_string(clip) + ", phase " +
+                             std::to_string(phase));
+                EXPECT_EQ(texel.r, expected.r);
+                EXPECT_EQ(texel.g, expected.g);
+                EXPECT_EQ(texel.b, expected.b);
+                EXPECT_GT(texel.a, 0);
+            }
     EXPECT_EQ(GpuTestDevice::validationMessages(), messagesBefore);
 }

@@ -132,7 +132,11 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
                                         baked.rows.size() * sizeof(glm::vec4), "crowd.bakedMatrices.texels");
     crowd->mClips = gpu::Buffer(device, baked.clips.size() * sizeof(shader::BakedClip), storage | texels,
                                 gpu::MemoryUsage::GpuOnly, "crowd.clips");
-    crowd->mClips.upload(std::span<const shader::BakedClip>(baked.clips));
+    // The GPU's clips carry their first impostor layer (BakedAnimation.h).
+    crowd->mImpostors = GpuImpostorAtlas::create(device, desc);
+    std::vector<shader::BakedClip> clips = baked.clips;
+    for (size_t k = 0; k < clips.size(); ++k) clips[k].timing.w = float(crowd->mImpostors.firstLayers()[k]);
+    crowd->mClips.upload(std::span<const shader::BakedClip>(clips));
     crowd->mClipsView = gpu::BufferView(device, crowd->mClips, VK_FORMAT_R32G32B32A32_UINT, 0, whole(crowd->mClips),
                                         "crowd.clips.texels");
     crowd->mState = gpu::Buffer(device, VkDeviceSize(desc.maxIds) * sizeof(uint32_t), storage | dst,
@@ -169,7 +173,6 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
     crowd->mClipMeshes.upload(std::span<const glm::uvec4>(clipMeshes));
     crowd->mClipMeshesView = gpu::BufferView(device, crowd->mClipMeshes, VK_FORMAT_R32G32B32A32_UINT, 0,
                                              whole(crowd->mClipMeshes), "crowd.clipMeshes.texels");
-    crowd->mImpostors = GpuImpostorAtlas::create(device, desc);
     const tessellator::TrianglePatternLibrary& patterns = tessellator::TrianglePatternLibrary::fractionalOdd();
     crowd->mPatternCodes =
         gpu::Buffer(device, patterns.codes().size_bytes(), vertex, gpu::MemoryUsage::GpuOnly, "crowd.nearPatternCodes");

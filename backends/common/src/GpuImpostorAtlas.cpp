@@ -117,11 +117,28 @@ GpuImpostorAtlas GpuImpostorAtlas::create(gpu::Device& device, const backend::Cr
         clips[c] = end > first[c] ? end - first[c] : 0u;
         mappings[c] = mappingOf(desc.characters[c].impostor, fullSide, clips[c]);
     }
+    // Each creature's layers in turn, a baked clip's first layer where its
+    // phases start: the rest pose (never baked by bakeImpostors) shows its
+    // creature's first clip, with no layers of its own.
+    GpuImpostorAtlas a;
+    a.mFirstLayers.assign(baked.clips.size(), 0u);
+    std::vector<uint32_t> creatureLayer(creatures, 0u);
+    uint32_t layers = 0;
+    for (uint32_t c = 0; c < creatures; ++c) {
+        creatureLayer[c] = layers;
+        if (mappings[c] == Mapping::Clear) continue;
+        for (uint32_t k = 0; k < clips[c]; ++k) {
+            const uint32_t atlasClip = mappings[c] == Mapping::Direct ? k : (k == 0 ? 0u : k - 1);
+            a.mFirstLayers[first[c] + k] = layers + atlasClip * TS_IMPOSTOR_PHASES;
+        }
+        layers += desc.characters[c].impostor->layers;
+    }
     // With no atlas at all, one clip's clear layers as small as
-    // TS_IMPOSTOR_MIPS levels allow: every layer index clamps to them.
-    const bool any = std::any_of(mappings.begin(), mappings.end(), [](Mapping m) { return m != Mapping::Clear; });
+    // TS_IMPOSTOR_MIPS levels allow, which every instance reads (coverage 0:
+    // its cards show no pixel).
+    const bool any = layers > 0;
     const uint32_t side = any ? fullSide : 1u << (TS_IMPOSTOR_MIPS - 1);
-    const uint32_t layers = (any ? uint32_t(baked.clips.size()) : 1u) * TS_IMPOSTOR_PHASES;
+    if (!any) layers = TS_IMPOSTOR_PHASES;
 
     Staged albedo, normal;
     for (uint32_t mip = 0; mip < TS_IMPOSTOR_MIPS; ++mip) {
@@ -134,26 +151,14 @@ GpuImpostorAtlas GpuImpostorAtlas::create(gpu::Device& device, const backend::Cr
                 continue;
             }
             for (uint32_t c = 0; c < creatures; ++c) {
-                const uint32_t base = first[c] * TS_IMPOSTOR_PHASES, count = clips[c] * TS_IMPOSTOR_PHASES;
-                if (count == 0) continue;
-                if (mappings[c] == Mapping::Clear) {
-                    const std::vector<std::byte> clear(layerBytes * count, std::byte{0});
-                    staged->copy(staged->append(clear), mip, mipSide, base, count);
-                    continue;
-                }
+                if (mappings[c] == Mapping::Clear) continue;
                 const character::ImpostorAtlas& atlas = *desc.characters[c].impostor;
                 const std::vector<uint8_t>& bytes = staged == &albedo ? atlas.albedo[mip] : atlas.normal[mip];
                 const VkDeviceSize at = staged->append(std::as_bytes(std::span<const uint8_t>(bytes)));
-                if (mappings[c] == Mapping::Direct) {
-                    staged->copy(at, mip, mipSide, base, count);
-                    continue;
-                }
-                staged->copy(at, mip, mipSide, base + TS_IMPOSTOR_PHASES, count - TS_IMPOSTOR_PHASES);
-                for (uint32_t k = 0; k < TS_IMPOSTOR_PHASES; ++k) staged->copy(at, mip, mipSide, base + k, 1);
+                staged->copy(at, mip, mipSide, creatureLayer[c], atlas.layers);
             }
         }
     }
-    GpuImpostorAtlas a;
     for (uint32_t c = 0; c < creatures && c < TS_CROWD_MAX_CHARACTERS; ++c)
         if (mappings[c] != Mapping::Clear) coveredBounds(*desc.characters[c].impostor, c, a.mBounds);
     a.mAlbedo = makeImage(device, side, layers, VK_FORMAT_R8G8B8A8_SRGB, albedo, "crowd.impostorAlbedo");

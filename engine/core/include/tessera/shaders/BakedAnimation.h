@@ -35,7 +35,8 @@ TS_NAMESPACE_BEGIN
 //           z = joints per frame; w = 1 for a looping clip
 //   timing: x = duration (s); y = 1 / duration, the phase per second (0 for a
 //           clip without duration); z = the rate actually baked,
-//           (frames - 1) / duration; w = 0
+//           (frames - 1) / duration; w = 0 (an instanced crowd's GPU copy: the
+//           clip's first impostor layer, CrowdImpostor.h)
 struct BakedClip {
     uvec4 frames;
     vec4 timing;
