@@ -4,6 +4,7 @@
 // a read past the buffer.
 #include "tessera/character/ImpostorFile.h"
 
+#include "tessera/core/BinaryFile.h"
 #include "tessera/shaders/CrowdImpostor.h"
 
 #include <algorithm>
@@ -31,34 +32,11 @@ constexpr Constant kConstants[] = {{"views", TS_IMPOSTOR_VIEWS},
                                    {"mips", TS_IMPOSTOR_MIPS},
                                    {"border", TS_IMPOSTOR_BORDER}};
 
-uint64_t fnv1a(std::span<const uint8_t> bytes) {
-    uint64_t h = 0xCBF29CE484222325ull;
-    for (uint8_t b : bytes) {
-        h ^= b;
-        h *= 0x100000001B3ull;
-    }
-    return h;
-}
+using core::getLittle;
+using core::putLittle;
 
-template <class T> void put(std::vector<uint8_t>& out, T value) {
-    uint8_t raw[sizeof(T)];
-    std::memcpy(raw, &value, sizeof(T));
-    // Little-endian on disk whatever the host (every target Tessera builds
-    // for is little-endian; this keeps the layout explicit).
-    if constexpr (std::endian::native == std::endian::big) std::reverse(raw, raw + sizeof(T));
-    const size_t at = out.size();
-    out.resize(at + sizeof(T));
-    std::memcpy(out.data() + at, raw, sizeof(T));
-}
-
-template <class T> T get(std::span<const uint8_t> bytes, size_t offset) {
-    uint8_t raw[sizeof(T)];
-    std::memcpy(raw, bytes.data() + offset, sizeof(T));
-    if constexpr (std::endian::native == std::endian::big) std::reverse(raw, raw + sizeof(T));
-    T value;
-    std::memcpy(&value, raw, sizeof(T));
-    return value;
-}
+constexpr core::BinaryFormat kFormat{kMagic, "impostor file", kHeaderBytes, kChecksumBytes, kImpostorFileVersion,
+                                     "bake it again"};
 
 // Bytes of every layer of one image at each mip, for this build's layout.
 uint64_t imageBytes(uint32_t layers, uint32_t mip) {
@@ -72,12 +50,12 @@ std::vector<uint8_t> encodeImpostorAtlas(const ImpostorAtlas& atlas) {
     assert(atlas.albedo.size() == TS_IMPOSTOR_MIPS && atlas.normal.size() == TS_IMPOSTOR_MIPS);
     std::vector<uint8_t> out(kMagic, kMagic + sizeof(kMagic));
     out.reserve(size_t(atlas.bytes()) + kHeaderBytes + kChecksumBytes);
-    put(out, kImpostorFileVersion);
-    for (const Constant& c : kConstants) put(out, c.value);
-    put(out, atlas.size);
-    put(out, atlas.layers);
-    put(out, atlas.centreY);
-    put(out, atlas.radius);
+    putLittle(out, kImpostorFileVersion);
+    for (const Constant& c : kConstants) putLittle(out, c.value);
+    putLittle(out, atlas.size);
+    putLittle(out, atlas.layers);
+    putLittle(out, atlas.centreY);
+    putLittle(out, atlas.radius);
     assert(out.size() == kHeaderBytes);
     for (uint32_t m = 0; m < TS_IMPOSTOR_MIPS; ++m) {
         assert(atlas.albedo[m].size() == atlas.layerBytes(m) * atlas.layers);
@@ -85,33 +63,23 @@ std::vector<uint8_t> encodeImpostorAtlas(const ImpostorAtlas& atlas) {
         out.insert(out.end(), atlas.albedo[m].begin(), atlas.albedo[m].end());
         out.insert(out.end(), atlas.normal[m].begin(), atlas.normal[m].end());
     }
-    put(out, fnv1a(out));
+    putLittle(out, core::fnv1a(out));
     return out;
 }
 
 Result<ImpostorAtlas> decodeImpostorAtlas(std::span<const uint8_t> bytes, const std::string& name) {
-    if (bytes.size() < sizeof(kMagic) && std::memcmp(bytes.data(), kMagic, bytes.size()) == 0)
-        return fail(name, ": truncated: ", std::to_string(bytes.size()), " bytes");
-    if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)
-        return fail(name, ": not a Tessera impostor file (no TSIMPOST magic)");
-    if (bytes.size() < kHeaderBytes + kChecksumBytes)
-        return fail(name, ": truncated: ", std::to_string(bytes.size()), " bytes, the header alone takes ",
-                    std::to_string(kHeaderBytes + kChecksumBytes));
-    const uint32_t version = get<uint32_t>(bytes, 8);
-    if (version != kImpostorFileVersion)
-        return fail(name, ": version ", std::to_string(version), ", this build reads version ",
-                    std::to_string(kImpostorFileVersion), " (bake it again)");
+    if (Status ok = core::checkBinaryHeader(bytes, kFormat, name); !ok) return ok.error();
     for (size_t i = 0; i < std::size(kConstants); ++i) {
-        const uint32_t value = get<uint32_t>(bytes, 12 + 4 * i);
+        const uint32_t value = getLittle<uint32_t>(bytes, 12 + 4 * i);
         if (value != kConstants[i].value)
             return fail(name, ": baked with ", kConstants[i].name, " ", std::to_string(value), ", this build draws ",
                         std::to_string(kConstants[i].value), " (bake it again)");
     }
     ImpostorAtlas atlas;
-    atlas.size = get<uint32_t>(bytes, 32);
-    atlas.layers = get<uint32_t>(bytes, 36);
-    atlas.centreY = get<float>(bytes, 40);
-    atlas.radius = get<float>(bytes, 44);
+    atlas.size = getLittle<uint32_t>(bytes, 32);
+    atlas.layers = getLittle<uint32_t>(bytes, 36);
+    atlas.centreY = getLittle<float>(bytes, 40);
+    atlas.radius = getLittle<float>(bytes, 44);
     if (atlas.size != TS_IMPOSTOR_VIEWS * TS_IMPOSTOR_CELL)
         return fail(name, ": layers of ", std::to_string(atlas.size), " texels a side, the layout's are ",
                     std::to_string(TS_IMPOSTOR_VIEWS * TS_IMPOSTOR_CELL));
@@ -123,15 +91,10 @@ Result<ImpostorAtlas> decodeImpostorAtlas(std::span<const uint8_t> bytes, const 
                     std::to_string(atlas.radius), ")");
     uint64_t expected = kHeaderBytes + kChecksumBytes;
     for (uint32_t m = 0; m < TS_IMPOSTOR_MIPS; ++m) expected += 2 * imageBytes(atlas.layers, m);
-    if (bytes.size() < expected)
-        return fail(name, ": truncated: ", std::to_string(bytes.size()), " bytes, its ", std::to_string(atlas.layers),
-                    " layers need ", std::to_string(expected));
-    if (bytes.size() > expected)
-        return fail(name, ": ", std::to_string(bytes.size() - expected), " bytes after the end of its ",
-                    std::to_string(atlas.layers), " layers");
-    const size_t payload = size_t(expected - kChecksumBytes);
-    if (get<uint64_t>(bytes, payload) != fnv1a(bytes.first(payload)))
-        return fail(name, ": checksum mismatch (the file is corrupted)");
+    if (Status ok = core::checkBinarySizeAndChecksum(bytes, expected,
+                                                     "its " + std::to_string(atlas.layers) + " layers", name);
+        !ok)
+        return ok.error();
     size_t at = kHeaderBytes;
     for (uint32_t m = 0; m < TS_IMPOSTOR_MIPS; ++m) {
         const size_t n = size_t(imageBytes(atlas.layers, m));
@@ -144,25 +107,13 @@ Result<ImpostorAtlas> decodeImpostorAtlas(std::span<const uint8_t> bytes, const 
 }
 
 Status writeImpostorFile(const std::filesystem::path& file, const ImpostorAtlas& atlas) {
-    const std::vector<uint8_t> bytes = encodeImpostorAtlas(atlas);
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    // Flushed before the check: a full disk shows only when the buffer goes out.
-    if (!out || !out.flush()) return fail(file.string(), ": cannot write the impostor file");
-    return {};
+    return core::writeBinaryFile(file, encodeImpostorAtlas(atlas), "impostor file");
 }
 
 Result<ImpostorAtlas> readImpostorFile(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary | std::ios::ate);
-    if (!in) return fail(file.string(), ": cannot open the impostor file");
-    // One read of the whole file (megabytes): its size first.
-    const std::streamoff size = in.tellg();
-    if (size < 0) return fail(file.string(), ": cannot read the impostor file");
-    std::vector<uint8_t> bytes(static_cast<size_t>(size));
-    in.seekg(0);
-    if (!in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size())))
-        return fail(file.string(), ": cannot read the impostor file");
-    return decodeImpostorAtlas(bytes, file.string());
+    auto bytes = core::readBinaryFile(file, "impostor file");
+    if (!bytes) return bytes.error();
+    return decodeImpostorAtlas(bytes.value(), file.string());
 }
 
 } // namespace tessera::character
