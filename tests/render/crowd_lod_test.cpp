@@ -106,7 +106,9 @@ TEST_P(CrowdLodBinning, GpuBinningEqualsTheCpuReference) {
             std::cout << "[crowd lod] " << backend << " " << name << " " << kTiers[t] << ": " << gpu.size()
                       << " on the GPU, " << cpu.size() << " in the CPU reference\n";
         }
-        if (name == "behindHills") EXPECT_GT(hiddenByTerrain(run.tiers), 100.0) << "the ridge hides nobody";
+        if (name == "behindHills") {
+            EXPECT_GT(hiddenByTerrain(run.tiers), 100.0) << "the ridge hides nobody";
+        }
     }
     for (size_t t = 0; t < kTiers.size(); ++t) EXPECT_GT(seen[t], 0u) << "no view put anybody in " << kTiers[t];
 }

@@ -326,7 +326,9 @@ TEST(LodManager, AMovingCameraNeverExceedsTheBudgetAndEveryPathAgrees) {
             aboveFar += !d.fadingOut && shader::tsLodPixels(instances[d.instance].sphere, f.params) >= policy.farPixels;
         EXPECT_LE(f.counts[TS_LOD_MIDDLE].instances, std::max(policy.budget.maxMiddleInstances, aboveFar + f.counts[TS_LOD_MIDDLE].fading));
         for (const lod::LodDraw& d : f.tiers[TS_LOD_FAR])
-            if (!d.fadingOut) EXPECT_LT(shader::tsLodPixels(instances[d.instance].sphere, f.params), policy.farPixels);
+            if (!d.fadingOut) {
+                EXPECT_LT(shader::tsLodPixels(instances[d.instance].sphere, f.params), policy.farPixels);
+            }
         demoted += f.budgetDemoted;
         pastFar += f.pastFarBudget;
         // Every instance in view is drawn, in one tier or another (a fading
