@@ -207,8 +207,7 @@ Result<std::unique_ptr<GpuCrowd>> GpuCrowd::create(gpu::Device& device, const ba
     // (vertexOffset 0): every tier fetches its vertices by local index, the
     // near tier from its compressed cage, the others from the baked vertex
     // animation.
-    std::vector<uint32_t>& args = crowd->mMeshArgs;
-    args.assign(TS_CROWD_ARG_WORDS, 0u);
+    std::vector<uint32_t> args(TS_CROWD_ARG_WORDS, 0u);
     for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier)
         for (uint32_t c = 0; c < crowd->mCreatures.size(); ++c) {
             const Creature& k = crowd->mCreatures[c];

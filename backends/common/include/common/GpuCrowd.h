@@ -198,7 +198,6 @@ private:
     std::array<gpu::Buffer, gpu::kFramesInFlight> mArgsReadback;
     std::array<bool, gpu::kFramesInFlight> mArgsWritten{};
     std::array<std::vector<uint32_t>, gpu::kFramesInFlight> mInitialArgs;
-    std::vector<uint32_t> mMeshArgs; ///< initialArgs with every list's region at 0
     bool mStateCleared = false;
     uint32_t mLastSlot = 0;
 };
