@@ -20,11 +20,11 @@ enum AgentFlag : uint8_t {
 };
 
 struct AgentState {
-    /// Avoidance's choice, applied by integrate(); then separation's second
+    /// Avoidance's choice, swapped into CrowdAgents::velocity by
+    /// integrate(); then (holding the old velocities) separation's second
     /// buffer of positions.
     std::vector<glm::vec2> nextVelocity;
-    /// XZ after motion and separation; during steer(), each agent's yield
-    /// weight (in x).
+    /// XZ after motion (written by steer()) and separation.
     std::vector<glm::vec2> moved;
     std::vector<glm::vec2> anchor;        ///< where it stood when it last made progress
     std::vector<float> stuckTime;         ///< seconds since it last got closer

@@ -177,25 +177,33 @@ void Crowd::steer() {
     const Navigation& nav = *mNavigation;
     const CostField& cost = nav.cost();
     const NavGrid& grid = nav.grid();
-    const float neighbourRadius2 = s.neighbourRadius * s.neighbourRadius;
-    const float closeRadius = 0.5f * s.neighbourRadius, closeRadius2 = closeRadius * closeRadius;
+    const float closeRadius = 0.5f * s.neighbourRadius;
     // With cells as large as the close radius, looking close first saves
     // nothing: one look over the whole radius.
     const bool sparse = mHash->cellSize() >= closeRadius;
     const float maxStep = mFastest * s.fleeSpeedFactor * s.timeStep;
     const float maxDelta = s.maxAcceleration * s.timeStep;
+    const float dt = s.timeStep;
+    const float maxTurn = s.maxTurnRate * dt;
     AgentState& st = *mState;
     CrowdAgents& a = mAgents;
-    // How much each agent gives way, once per agent rather than once per
-    // agent that has it for a neighbour (a square root and a division, ten
-    // times over). Kept in the x of integrate()'s buffer, free until then.
-    std::vector<glm::vec2>& yield = st.moved;
+    // What integrate() did, once an agent's new velocity is known: its spot
+    // after moving (separation's input), its heading and what is left of
+    // its fleeing. Here, in the loop that already has the agent in cache,
+    // rather than a pass of its own over every agent. The velocity itself
+    // waits in nextVelocity (neighbours still read the old one).
+    auto move = [&](uint32_t i, glm::vec2 v) {
+        st.nextVelocity[i] = v;
+        st.moved[i] = xz(a.position[i]) + v * dt;
+        if (v != glm::vec2(0.0f)) {
+            const float turn = wrapAngle(std::atan2(v.x, v.y) - a.heading[i]);
+            a.heading[i] = wrapAngle(a.heading[i] + std::clamp(turn, -maxTurn, maxTurn));
+        }
+        st.fleeTime[i] = std::max(0.0f, st.fleeTime[i] - dt);
+    };
     core::parallelForRanges(count, kGrain, s.threads, [&](core::IndexRange range) {
-        for (uint32_t i = range.begin; i < range.end; ++i) yield[i].x = yieldWeight(a.velocity[i], a.preferredSpeed[i]);
-    });
-    core::parallelForRanges(count, kGrain, s.threads, [&](core::IndexRange range) {
-        Neighbour near[16];
-        float nearDistance[16];
+        NearAgent nearby[SpatialHash::kMaxNearest];
+        Neighbour near[SpatialHash::kMaxNearest];
         WallPoint walls[kMaxWalls];
         float wallDistance[kMaxWalls];
         std::vector<VelocityLine> lines;
@@ -240,38 +248,20 @@ void Crowd::steer() {
             // someone may be pushing.
             if (preferred == glm::vec2(0.0f) && a.velocity[i] == glm::vec2(0.0f)) {
                 st.flags[i] = flags | kCrowded;
-                st.nextVelocity[i] = glm::vec2(0.0f);
+                move(i, glm::vec2(0.0f));
                 continue;
             }
-            // The nearest neighbours, by distance then index. Looked for close
-            // by first: in a dense crowd that finds them all at a fraction of
-            // the cost; the rest of the radius only when it did not.
-            uint32_t found = 0;
-            const uint32_t cap = s.maxNeighbours;
-            auto consider = [&](uint32_t j, glm::vec2 q, float lo2, float hi2) {
-                if (j == i) return;
-                const glm::vec2 offset = q - p;
-                const float d = glm::dot(offset, offset);
-                if (d <= lo2 || d > hi2 || (found == cap && d >= nearDistance[cap - 1])) return;
-                uint32_t k = found < cap ? found++ : cap - 1;
-                while (k > 0 && nearDistance[k - 1] > d) {
-                    near[k] = near[k - 1];
-                    nearDistance[k] = nearDistance[k - 1];
-                    --k;
-                }
-                near[k] = {offset, a.velocity[j], a.radius[j], j};
-                nearDistance[k] = d;
-            };
-            if (!sparse) mHash->forEachNear(p, closeRadius, [&](uint32_t j, glm::vec2 q) { consider(j, q, -1.0f, closeRadius2); });
-            if (sparse || found < cap)
-                mHash->forEachNear(p, s.neighbourRadius, [&](uint32_t j, glm::vec2 q) {
-                    consider(j, q, sparse ? -1.0f : closeRadius2, neighbourRadius2);
-                });
+            // The nearest neighbours, by distance then the hash's order.
+            // Looked for close by first: in a dense crowd that finds them all
+            // at a fraction of the cost; the rest of the radius only when it
+            // did not.
+            const uint32_t found = mHash->nearest(p, i, sparse ? s.neighbourRadius : closeRadius, s.neighbourRadius,
+                                                  s.maxNeighbours, nearby);
             // Whether anybody is near enough to touch it by the end of the
             // step (both walking at most maxStep): separation looks only at
             // such agents.
             const float touch = a.radius[i] + mLargestRadius + 2.0f * maxStep;
-            if (found > 0 && nearDistance[0] < touch * touch) flags |= kCrowded;
+            if (found > 0 && nearby[0].distance2 < touch * touch) flags |= kCrowded;
             st.flags[i] = flags;
             // Walking its field, an agent keeps right of those who want to
             // come the other way just ahead (standing or walking): the more
@@ -336,9 +326,14 @@ void Crowd::steer() {
             }
             // Who gives way: an agent held up (slower than it wants) more than
             // one walking freely, so a stream comes through a waiting crowd
-            // rather than the crowd pressing into the stream.
-            const float weight = yield[i].x;
-            for (uint32_t k = 0; k < found; ++k) near[k].share = weight / (weight + yield[near[k].agent].x);
+            // rather than the crowd pressing into the stream. The neighbours'
+            // velocities and radii are read only for the few kept.
+            const float weight = yieldWeight(a.velocity[i], speed);
+            for (uint32_t k = 0; k < found; ++k) {
+                const uint32_t j = nearby[k].agent;
+                const float share = weight / (weight + yieldWeight(a.velocity[j], a.preferredSpeed[j]));
+                near[k] = {nearby[k].offset, a.velocity[j], a.radius[j], j, share};
+            }
             AvoidanceQuery query{a.velocity[i], preferred, maxSpeed, a.radius[i], s.comfortMargin,
                                  s.horizonSeconds, kWallHorizon, s.timeStep};
             const glm::vec2 chosen = avoidCollisions(query, std::span<const Neighbour>(near, found),
@@ -346,29 +341,15 @@ void Crowd::steer() {
             const glm::vec2 delta = chosen - a.velocity[i];
             const float change = glm::length(delta);
             const glm::vec2 limited = change > maxDelta ? a.velocity[i] + delta * (maxDelta / change) : chosen;
-            st.nextVelocity[i] = gait.walkable(limited, chosen);
+            move(i, gait.walkable(limited, chosen));
         }
     });
 }
 
 void Crowd::integrate() {
-    const CrowdSettings& s = mSettings;
-    AgentState& st = *mState;
-    CrowdAgents& a = mAgents;
-    const float dt = s.timeStep;
-    const float maxTurn = s.maxTurnRate * dt;
-    core::parallelForRanges(uint32_t(a.size()), kGrain, s.threads, [&](core::IndexRange range) {
-        for (uint32_t i = range.begin; i < range.end; ++i) {
-            const glm::vec2 v = st.nextVelocity[i];
-            a.velocity[i] = v;
-            st.moved[i] = xz(a.position[i]) + v * dt;
-            if (v != glm::vec2(0.0f)) {
-                const float turn = wrapAngle(std::atan2(v.x, v.y) - a.heading[i]);
-                a.heading[i] = wrapAngle(a.heading[i] + std::clamp(turn, -maxTurn, maxTurn));
-            }
-            st.fleeTime[i] = std::max(0.0f, st.fleeTime[i] - dt);
-        }
-    });
+    // steer() moved every agent already; the new velocities become the
+    // published ones (the old ones' buffer is separation's scratch next).
+    mAgents.velocity.swap(mState->nextVelocity);
 }
 
 void Crowd::separate() {

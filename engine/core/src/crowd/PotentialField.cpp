@@ -11,10 +11,6 @@ PotentialField::PotentialField(const NavGrid& grid, const Region& goal)
     : mGrid(&grid), mGoal(goal), mPhi(grid.cellCount(), kUnreachable), mTileKey(grid.tileCount(), 0.0f),
       mTileActive(grid.tileCount(), 0), mMark(grid.cellCount(), 0) {}
 
-float PotentialField::cellValue(int32_t i, int32_t j) const {
-    return mGrid->inGrid(i, j) ? mPhi[mGrid->index(uint32_t(i), uint32_t(j))] : kUnreachable;
-}
-
 float PotentialField::sample(glm::vec2 p) const {
     const float h = mGrid->cellSize();
     const glm::vec2 f = p / h - 0.5f;

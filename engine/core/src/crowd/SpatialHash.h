@@ -13,6 +13,13 @@
 
 namespace tessera::crowd {
 
+/// A neighbour found by SpatialHash::nearest().
+struct NearAgent {
+    uint32_t agent = 0;
+    float distance2 = 0.0f; ///< squared distance
+    glm::vec2 offset{0.0f}; ///< its position less the query point
+};
+
 /// Agents sorted into square cells of a fixed size, the cells hashed into
 /// a power-of-two table (no grid over the whole map, however large).
 /// Rebuilt once per step by a counting sort that keeps agents in ascending
@@ -32,35 +39,53 @@ public:
     /// them from a few contiguous runs instead of all over the agents' arrays.
     template <class F>
     void forEachNear(glm::vec2 p, float radius, F&& f) const {
-        const int32_t x0 = floorToInt((p.x - radius) * mInverseCell);
-        const int32_t x1 = floorToInt((p.x + radius) * mInverseCell);
-        const int32_t z0 = floorToInt((p.y - radius) * mInverseCell);
-        const int32_t z1 = floorToInt((p.y + radius) * mInverseCell);
-        const uint32_t span = uint32_t(x1 - x0);
-        for (int32_t z = z0; z <= z1; ++z) {
-            // A row of cells is a run of consecutive buckets, so its agents
-            // are one run of slots (two if it wraps around the table).
-            const uint32_t first = bucketOf(x0, z), last = first + span;
-            const uint32_t row = uint32_t(z) & 0xFFFFu;
-            auto visit = [&](uint32_t from, uint32_t to) {
-                for (uint32_t s = mStart[from]; s < mStart[to]; ++s) {
-                    const uint32_t key = mKey[s];
-                    // Other cells hashed into these buckets are skipped by
-                    // key, so nobody is visited twice.
-                    if ((key >> 16) == row && ((key - uint32_t(x0)) & 0xFFFFu) <= span) f(mAgent[s], mPosition[s]);
-                }
-            };
-            if (last <= mMask) visit(first, last + 1);
-            else visit(first, mMask + 1), visit(0, last - mMask);
-        }
+        forEachRun(p, radius, [&](uint32_t first, uint32_t end, uint32_t row, uint32_t x0, uint32_t span) {
+            for (uint32_t s = first; s < end; ++s)
+                if (inRow(mKey[s], row, x0, span)) f(mAgent[s], mPosition[s]);
+        });
     }
 
+    /// The up to `count` (at most kMaxNearest) agents nearest `p` within
+    /// `radius`, `self` left out, nearest first (equal distances in the
+    /// order forEachNear visits them), into `out`; returns how many. Looks
+    /// within `closeRadius` first, and over the rest of `radius` only when
+    /// that found fewer than `count` (closeRadius >= radius: one look).
+    uint32_t nearest(glm::vec2 p, uint32_t self, float closeRadius, float radius, uint32_t count,
+                     NearAgent* out) const;
+    static constexpr uint32_t kMaxNearest = 16;
     /// The cell size of the last build (metres).
     float cellSize() const { return 1.0f / mInverseCell; }
     /// Bytes held (for the memory figures).
     size_t bytes() const;
 
 private:
+    // Calls f(first, end, row, x0, span) for each run of slots holding the
+    // cells within `radius` of `p` along both axes: a row of cells is a run
+    // of consecutive buckets, so its agents are one run of slots (two where
+    // it wraps around the table). Other cells hashed into the same buckets
+    // share the run; inRow() tells them apart.
+    template <class F>
+    void forEachRun(glm::vec2 p, float radius, F&& f) const {
+        const int32_t x0 = floorToInt((p.x - radius) * mInverseCell);
+        const int32_t x1 = floorToInt((p.x + radius) * mInverseCell);
+        const int32_t z0 = floorToInt((p.y - radius) * mInverseCell);
+        const int32_t z1 = floorToInt((p.y + radius) * mInverseCell);
+        const uint32_t span = uint32_t(x1 - x0);
+        for (int32_t z = z0; z <= z1; ++z) {
+            const uint32_t first = bucketOf(x0, z), last = first + span;
+            const uint32_t row = uint32_t(z) & 0xFFFFu;
+            if (last <= mMask) {
+                f(mStart[first], mStart[last + 1], row, uint32_t(x0), span);
+            } else {
+                f(mStart[first], mStart[mMask + 1], row, uint32_t(x0), span);
+                f(mStart[0], mStart[last - mMask], row, uint32_t(x0), span);
+            }
+        }
+    }
+    // Whether a slot's key is a cell of row `row` from x0 to x0 + span.
+    static bool inRow(uint32_t key, uint32_t row, uint32_t x0, uint32_t span) {
+        return (key >> 16) == row && ((key - x0) & 0xFFFFu) <= span;
+    }
     // Cell coordinates folded to 16 bits each: cells 65,536 apart share a key
     // and are told apart by the caller's distance test.
     static uint32_t cellKey(int32_t x, int32_t z) { return (uint32_t(x) & 0xFFFFu) | (uint32_t(z) << 16); }
