@@ -6,7 +6,7 @@
 #include "AgentState.h"
 #include "Avoidance.h"
 #include "Navigation.h"
-#include "SpatialHash.h"
+#include "NeighbourGrid.h"
 #include "tessera/crowd/FloorToInt.h"
 #include "tessera/core/ParallelFor.h"
 #include "tessera/core/Random.h"
@@ -25,7 +25,7 @@ namespace {
 // enough to balance. Fixed, so the split never depends on the thread count.
 constexpr uint32_t kGrain = 256;
 // How far an agent may move in one step plus what separation may add, for
-// neighbour queries made with the hash built before the step moved anyone.
+// neighbour queries made with the grid built before the step moved anyone.
 constexpr float kQuerySlack = 0.15f;
 // Walls (impassable cells) are avoided this many seconds ahead; the nearest
 // kMaxWalls cells within reach count.
@@ -81,6 +81,21 @@ float wrapAngle(float a) {
 
 glm::vec2 xz(const glm::vec3& p) { return {p.x, p.z}; }
 
+// A push from one neighbour, and where that neighbour stands in the order
+// separation sums pushes in: by row, then column, of cells of
+// neighbourCellSize() (where it stood at the start of the step), then by
+// index. A fixed order, whatever the neighbour grid's layout; and the order
+// separation has always summed in (float sums in another order move agents
+// by rounding, which in the dense counterflow changes which side flows).
+struct Contact {
+    int32_t row = 0, column = 0;
+    uint32_t agent = 0;
+    glm::vec2 push{0.0f};
+    bool operator<(const Contact& o) const {
+        return row != o.row ? row < o.row : column != o.column ? column < o.column : agent < o.agent;
+    }
+};
+
 // How much an agent gives way: 1 walking at its preferred speed, up to
 // 1 + kHeldUpYield standing.
 float yieldWeight(glm::vec2 velocity, float preferredSpeed) {
@@ -104,7 +119,7 @@ void Crowd::step() {
     const auto fieldsDone = Clock::now();
     {
         TESSERA_CPU_SCOPE("crowd.avoidance");
-        mHash->build(mAgents.position, hashCellSize(), mSettings.threads);
+        mNeighbours->build(mAgents.position, tileAgents(), neighbourCellSize(), mSettings.threads);
         steer();
     }
     const auto avoidanceDone = Clock::now();
@@ -121,7 +136,13 @@ void Crowd::step() {
     mTimings.integration = millisecondsSince(avoidanceDone);
 }
 
-float Crowd::hashCellSize() const {
+TileAgents Crowd::tileAgents() const {
+    const NavGrid& grid = navGrid();
+    return {mBins->order(), mBins->starts(), mBins->occupiedTiles(), grid.cellSize(), grid.width(), grid.height(),
+            NavGrid::kTileCells};
+}
+
+float Crowd::neighbourCellSize() const {
     // About two agents per cell where they are: smaller cells waste
     // lookups on empty cells in a sparse crowd, larger ones make a dense
     // crowd's queries wade through agents out of reach. The ground they
@@ -180,7 +201,7 @@ void Crowd::steer() {
     const float closeRadius = 0.5f * s.neighbourRadius;
     // With cells as large as the close radius, looking close first saves
     // nothing: one look over the whole radius.
-    const bool sparse = mHash->cellSize() >= closeRadius;
+    const bool sparse = neighbourCellSize() >= closeRadius;
     const float maxStep = mFastest * s.fleeSpeedFactor * s.timeStep;
     const float maxDelta = s.maxAcceleration * s.timeStep;
     const float dt = s.timeStep;
@@ -202,8 +223,8 @@ void Crowd::steer() {
         st.fleeTime[i] = std::max(0.0f, st.fleeTime[i] - dt);
     };
     core::parallelForRanges(count, kGrain, s.threads, [&](core::IndexRange range) {
-        NearAgent nearby[SpatialHash::kMaxNearest];
-        Neighbour near[SpatialHash::kMaxNearest];
+        NearAgent nearby[NeighbourGrid::kMaxNearest];
+        Neighbour near[NeighbourGrid::kMaxNearest];
         WallPoint walls[kMaxWalls];
         float wallDistance[kMaxWalls];
         std::vector<VelocityLine> lines;
@@ -251,11 +272,11 @@ void Crowd::steer() {
                 move(i, glm::vec2(0.0f));
                 continue;
             }
-            // The nearest neighbours, by distance then the hash's order.
+            // The nearest neighbours, by distance then index.
             // Looked for close by first: in a dense crowd that finds them all
             // at a fraction of the cost; the rest of the radius only when it
             // did not.
-            const uint32_t found = mHash->nearest(p, i, sparse ? s.neighbourRadius : closeRadius, s.neighbourRadius,
+            const uint32_t found = mNeighbours->nearest(p, i, sparse ? s.neighbourRadius : closeRadius, s.neighbourRadius,
                                                   s.maxNeighbours, nearby);
             // Whether anybody is near enough to touch it by the end of the
             // step (both walking at most maxStep): separation looks only at
@@ -380,6 +401,7 @@ void Crowd::separate() {
     // decided from a maximum, so the same on any thread count.
     if (a.size() == 0) return;
     const uint32_t iterations = std::max(1u, s.separationIterations);
+    const float inverseOrderCell = 1.0f / neighbourCellSize();
     const uint32_t ranges = (uint32_t(a.size()) + kGrain - 1) / kGrain;
     std::vector<float> largestPush(ranges);
     for (uint32_t iteration = 0; iteration < iterations; ++iteration) {
@@ -388,13 +410,14 @@ void Crowd::separate() {
         const bool neighbours = s.separationIterations > 0;
         core::parallelForRanges(uint32_t(a.size()), kGrain, s.threads, [&](core::IndexRange range) {
             float largest = 0.0f;
+            std::vector<Contact> contacts;
             for (uint32_t i = range.begin; i < range.end; ++i) {
                 glm::vec2 p = in[i];
                 const float r = a.radius[i];
                 if (neighbours && (st.flags[i] & kCrowded)) {
-                    glm::vec2 push(0.0f);
                     const float near = r + mLargestRadius + 2.0f * kQuerySlack;
-                    mHash->forEachNear(p, near, [&](uint32_t j, glm::vec2 was) {
+                    contacts.clear();
+                    mNeighbours->forEachNear(p, near, [&](uint32_t j, glm::vec2 was) {
                         // Where j stood at the start of the step is within
                         // the slack of where it is: far from that, no need
                         // to look j up at all.
@@ -405,8 +428,14 @@ void Crowd::separate() {
                         if (d2 >= reach * reach) return;
                         const float distance = std::sqrt(d2);
                         const glm::vec2 n = distance > 1e-5f ? d / distance : glm::vec2(i < j ? 1.0f : -1.0f, 0.0f);
-                        push += 0.5f * (reach - distance) * n;
+                        contacts.push_back({floorToInt(was.y * inverseOrderCell), floorToInt(was.x * inverseOrderCell), j,
+                                            0.5f * (reach - distance) * n});
                     });
+                    // Few: an insertion sort.
+                    for (size_t k = 1; k < contacts.size(); ++k)
+                        for (size_t m = k; m > 0 && contacts[m] < contacts[m - 1]; --m) std::swap(contacts[m], contacts[m - 1]);
+                    glm::vec2 push(0.0f);
+                    for (const Contact& c : contacts) push += c.push;
                     p += push;
                     largest = std::max(largest, glm::dot(push, push));
                 }
