@@ -138,8 +138,7 @@ void Crowd::step() {
 
 TileAgents Crowd::tileAgents() const {
     const NavGrid& grid = navGrid();
-    return {mBins->order(), mBins->starts(), mBins->occupiedTiles(), grid.cellSize(), grid.width(), grid.height(),
-            NavGrid::kTileCells};
+    return {mBins->order(), mBins->starts(), mBins->occupiedTiles(), grid.cellSize(), grid.width(), grid.height()};
 }
 
 float Crowd::neighbourCellSize() const {

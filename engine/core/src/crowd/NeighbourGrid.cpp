@@ -11,12 +11,12 @@ namespace tessera::crowd {
 void NeighbourGrid::build(std::span<const glm::vec3> positions, const TileAgents& tiles, float cellSize,
                           uint32_t threads) {
     mInverseCell = 1.0f / tiles.cellSize;
-    mTileSize = float(tiles.tileCells) * tiles.cellSize;
+    constexpr uint32_t n = NavGrid::kTileCells;
+    mTileSize = float(n) * tiles.cellSize;
     mWidth = tiles.width;
     mHeight = tiles.height;
-    mTileCells = tiles.tileCells;
-    mTilesX = (mWidth + mTileCells - 1) / mTileCells;
-    mTilesZ = (mHeight + mTileCells - 1) / mTileCells;
+    mTilesX = (mWidth + n - 1) / n;
+    mTilesZ = (mHeight + n - 1) / n;
     mTiles.assign(size_t(mTilesX) * mTilesZ, TileCells{});
     // Cells per side: as many as cellSize asks for, but no more cells than
     // the tile has agents (a sparse crowd over a large map would otherwise
@@ -66,56 +66,68 @@ void NeighbourGrid::build(std::span<const glm::vec3> positions, const TileAgents
 
 uint32_t NeighbourGrid::nearest(glm::vec2 p, uint32_t self, float closeRadius, float radius, uint32_t count,
                                 NearAgent* out) const {
+    // The agent itself is among the slots, at distance 0 (its position is
+    // stored as it is): the count + 1 nearest are kept, and it is dropped
+    // at the end, rather than tested for at every slot.
+    const uint32_t keepCount = count + 1;
     // Kept sorted by distance, then by agent index.
-    float distance[kMaxNearest];
-    uint32_t slotOf[kMaxNearest], agentOf[kMaxNearest];
+    float distance[kMaxNearest + 1];
+    uint32_t slotOf[kMaxNearest + 1], agentOf[kMaxNearest + 1];
     uint32_t found = 0;
-    auto after = [&](uint32_t k, float d, uint32_t agent) {
-        return distance[k] > d || (distance[k] == d && agentOf[k] > agent);
+    // Slots within reach, gathered without branches (whether a slot is in
+    // reach is a coin toss, and mispredicted branches were most of a query's
+    // time), then kept or not a few at a time.
+    constexpr uint32_t kBatch = 64;
+    uint32_t batch[kBatch];
+    float batchDistance[kBatch];
+    uint32_t gathered = 0;
+    auto keep = [&] {
+        for (uint32_t k = 0; k < gathered; ++k) {
+            const float d = batchDistance[k];
+            const uint32_t agent = mAgent[batch[k]];
+            auto after = [&](uint32_t at) { return distance[at] > d || (distance[at] == d && agentOf[at] > agent); };
+            if (found == keepCount && !after(keepCount - 1)) continue;
+            uint32_t at = found < keepCount ? found++ : keepCount - 1;
+            for (; at > 0 && after(at - 1); --at) {
+                distance[at] = distance[at - 1];
+                slotOf[at] = slotOf[at - 1];
+                agentOf[at] = agentOf[at - 1];
+            }
+            distance[at] = d;
+            slotOf[at] = batch[k];
+            agentOf[at] = agent;
+        }
+        gathered = 0;
     };
-    auto look = [&](float reach, float lo2, float hi2) {
+    // Within reach: d <= hi2, and beyond lo2 when looking past a first look.
+    auto look = [&]<bool kRing>(float reach, float lo2, float hi2) {
         forEachRun(p, reach, [&](uint32_t first, uint32_t end) {
-            // Two passes per batch of slots: the tests without branches
-            // (which way each goes is a coin toss), then the few that passed.
-            constexpr uint32_t kBatch = 32;
-            uint32_t batch[kBatch];
-            float batchDistance[kBatch];
             for (uint32_t begin = first; begin < end; begin += kBatch) {
                 const uint32_t stop = std::min(end, begin + kBatch);
-                uint32_t passed = 0;
+                if (gathered + (stop - begin) > kBatch) keep();
                 for (uint32_t s = begin; s < stop; ++s) {
                     const glm::vec2 offset = mPosition[s] - p;
                     const float d = offset.x * offset.x + offset.y * offset.y;
-                    batch[passed] = s;
-                    batchDistance[passed] = d;
-                    passed += (d > lo2) & (d <= hi2) & (mAgent[s] != self);
-                }
-                for (uint32_t k = 0; k < passed; ++k) {
-                    const float d = batchDistance[k];
-                    const uint32_t agent = mAgent[batch[k]];
-                    if (found == count && !after(count - 1, d, agent)) continue;
-                    uint32_t at = found < count ? found++ : count - 1;
-                    for (; at > 0 && after(at - 1, d, agent); --at) {
-                        distance[at] = distance[at - 1];
-                        slotOf[at] = slotOf[at - 1];
-                        agentOf[at] = agentOf[at - 1];
-                    }
-                    distance[at] = d;
-                    slotOf[at] = batch[k];
-                    agentOf[at] = agent;
+                    batch[gathered] = s;
+                    batchDistance[gathered] = d;
+                    gathered += kRing ? (d > lo2) & (d <= hi2) : d <= hi2;
                 }
             }
         });
+        keep();
     };
     const float close2 = closeRadius * closeRadius, radius2 = radius * radius;
     if (closeRadius < radius) {
-        look(closeRadius, -1.0f, close2);
-        if (found < count) look(radius, close2, radius2);
+        look.template operator()<false>(closeRadius, 0.0f, close2);
+        // The agent itself was found in the first look.
+        if (found < keepCount) look.template operator()<true>(radius, close2, radius2);
     } else {
-        look(radius, -1.0f, radius2);
+        look.template operator()<false>(radius, 0.0f, radius2);
     }
-    for (uint32_t k = 0; k < found; ++k) out[k] = {agentOf[k], distance[k], mPosition[slotOf[k]] - p};
-    return found;
+    uint32_t kept = 0;
+    for (uint32_t k = 0; k < found && kept < count; ++k)
+        if (agentOf[k] != self) out[kept++] = {agentOf[k], distance[k], mPosition[slotOf[k]] - p};
+    return kept;
 }
 
 size_t NeighbourGrid::bytes() const {

@@ -2,6 +2,7 @@
 // Internal: the grid that finds an agent's neighbours.
 
 #include "tessera/crowd/FloorToInt.h"
+#include "tessera/crowd/NavGrid.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -24,13 +25,13 @@ struct NearAgent {
 /// NeighbourGrid is built from: tile t's agents are order[start[t]] ..
 /// order[start[t + 1] - 1]; an agent's tile is that of the navigation cell
 /// under it, clamped to the grid (`cellSize` metres from world (0, 0),
-/// `width` by `height` cells, `tileCells` by `tileCells` to a tile).
+/// `width` by `height` cells, NavGrid::kTileCells a side to a tile).
 struct TileAgents {
     std::span<const uint32_t> order;
     std::span<const uint32_t> start;
     std::span<const uint32_t> occupied; ///< tiles holding agents, ascending
     float cellSize = 1.0f;
-    uint32_t width = 0, height = 0, tileCells = 1;
+    uint32_t width = 0, height = 0;
 };
 
 /// Each tile's agents sorted into a grid of square cells inside the tile,
@@ -107,11 +108,11 @@ private:
     }
 
     uint32_t tileOf(float v, uint32_t cells) const {
-        return uint32_t(std::clamp(floorToInt(v * mInverseCell), 0, int32_t(cells) - 1)) / mTileCells;
+        return uint32_t(std::clamp(floorToInt(v * mInverseCell), 0, int32_t(cells) - 1)) / NavGrid::kTileCells;
     }
 
     float mInverseCell = 1.0f, mTileSize = 1.0f;
-    uint32_t mWidth = 0, mHeight = 0, mTileCells = 1, mTilesX = 0, mTilesZ = 0;
+    uint32_t mWidth = 0, mHeight = 0, mTilesX = 0, mTilesZ = 0;
     std::vector<TileCells> mTiles;     ///< per tile of the grid
     std::vector<uint32_t> mCellStart;  ///< per cell of the occupied tiles, and one past each tile's last
     std::vector<uint32_t> mAgent;      ///< slot -> agent
