@@ -76,7 +76,22 @@ glm::vec2 rotate(glm::vec2 v, float angle) {
 
 float wrapAngle(float a) {
     constexpr float pi = std::numbers::pi_v<float>;
-    return a - 2.0f * pi * float(floorToInt((a + pi) / (2.0f * pi)));
+    return a - 2.0f * pi * float(floorToInt((a + pi) * (0.5f / pi)));
+}
+
+// atan2(y, x) for x, y not both zero, within 2e-6 radians: an odd minimax
+// polynomial for atan on [0, 1], then the octant. Only the heading uses it,
+// which nothing in the simulation reads back; libm's atan2f was 4% of a
+// step's instructions.
+float headingAngle(float y, float x) {
+    constexpr float pi = std::numbers::pi_v<float>;
+    const float ax = std::abs(x), ay = std::abs(y);
+    const float t = std::min(ax, ay) / std::max(ax, ay), t2 = t * t;
+    float r = t * (0.99997726f +
+                   t2 * (-0.33262347f + t2 * (0.19354346f + t2 * (-0.11643287f + t2 * (0.05265332f + t2 * -0.01172120f)))));
+    if (ay > ax) r = 0.5f * pi - r;
+    if (x < 0.0f) r = pi - r;
+    return y < 0.0f ? -r : r;
 }
 
 glm::vec2 xz(const glm::vec3& p) { return {p.x, p.z}; }
@@ -216,7 +231,7 @@ void Crowd::steer() {
         st.nextVelocity[i] = v;
         st.moved[i] = xz(a.position[i]) + v * dt;
         if (v != glm::vec2(0.0f)) {
-            const float turn = wrapAngle(std::atan2(v.x, v.y) - a.heading[i]);
+            const float turn = wrapAngle(headingAngle(v.x, v.y) - a.heading[i]);
             a.heading[i] = wrapAngle(a.heading[i] + std::clamp(turn, -maxTurn, maxTurn));
         }
         st.fleeTime[i] = std::max(0.0f, st.fleeTime[i] - dt);
