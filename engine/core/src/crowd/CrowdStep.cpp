@@ -7,6 +7,7 @@
 #include "Avoidance.h"
 #include "Navigation.h"
 #include "NeighbourGrid.h"
+#include "StepTuning.h"
 #include "tessera/crowd/FloorToInt.h"
 #include "tessera/core/ParallelFor.h"
 #include "tessera/core/Random.h"
@@ -21,12 +22,6 @@
 namespace tessera::crowd {
 namespace {
 
-// Agents per parallel task: enough work to amortise scheduling, small
-// enough to balance. Fixed, so the split never depends on the thread count.
-constexpr uint32_t kGrain = 256;
-// How far an agent may move in one step plus what separation may add, for
-// neighbour queries made with the grid built before the step moved anyone.
-constexpr float kQuerySlack = 0.15f;
 // Walls (impassable cells) are avoided this many seconds ahead; the nearest
 // kMaxWalls cells within reach count.
 constexpr float kWallHorizon = 1.0f;
@@ -35,8 +30,6 @@ constexpr uint32_t kMaxWalls = 8;
 constexpr uint64_t kReorderSteps = 32;
 // Agents per range of the statistics' parallel count.
 constexpr uint32_t kStatsGrain = 16384;
-// Separation stops once no agent needed a push longer than this (metres).
-constexpr float kSettled = 1e-3f;
 // An arrival at a Stay goal picks its spot up to this far on (metres)...
 constexpr float kStaySpotRange = 8.0f;
 // ...and has reached it when closer than this.
@@ -95,21 +88,6 @@ float headingAngle(float y, float x) {
 }
 
 glm::vec2 xz(const glm::vec3& p) { return {p.x, p.z}; }
-
-// A push from one neighbour, and where that neighbour stands in the order
-// separation sums pushes in: by row, then column, of cells of
-// neighbourCellSize() (where it stood at the start of the step), then by
-// index. A fixed order, whatever the neighbour grid's layout; and the order
-// separation has always summed in (float sums in another order move agents
-// by rounding, which in the dense counterflow changes which side flows).
-struct Contact {
-    int32_t row = 0, column = 0;
-    uint32_t agent = 0;
-    glm::vec2 push{0.0f};
-    bool operator<(const Contact& o) const {
-        return row != o.row ? row < o.row : column != o.column ? column < o.column : agent < o.agent;
-    }
-};
 
 // How much an agent gives way: 1 walking at its preferred speed, up to
 // 1 + kHeldUpYield standing.
@@ -385,82 +363,6 @@ void Crowd::integrate() {
     // steer() moved every agent already; the new velocities become the
     // published ones (the old ones' buffer is separation's scratch next).
     mAgents.velocity.swap(mState->nextVelocity);
-}
-
-void Crowd::separate() {
-    const CrowdSettings& s = mSettings;
-    AgentState& st = *mState;
-    const CrowdAgents& a = mAgents;
-    const CostField& cost = mNavigation->cost();
-    const NavGrid& grid = navGrid();
-    const float h = grid.cellSize();
-    // Pushes `p` out of the impassable cells around it (and back onto its
-    // previous spot if it walked right into one).
-    auto keepOutOfWalls = [&](glm::vec2 p, float r, glm::vec2 previous) {
-        if (!cost.passableAt(p)) p = previous;
-        const glm::ivec2 c = grid.cellOf(p);
-        for (int32_t j = c.y - 1; j <= c.y + 1; ++j)
-            for (int32_t i = c.x - 1; i <= c.x + 1; ++i) {
-                if (grid.inGrid(i, j) && cost.passable(grid.index(uint32_t(i), uint32_t(j)))) continue;
-                const glm::vec2 lo = glm::vec2(float(i), float(j)) * h;
-                const glm::vec2 d = p - glm::clamp(p, lo, lo + h);
-                const float d2 = glm::dot(d, d);
-                if (d2 < r * r && d2 > 1e-12f) p += d * (r / std::sqrt(d2) - 1.0f);
-            }
-        return p;
-    };
-    // Jacobi iterations, each reading the positions of the last: the result
-    // does not depend on the order agents are visited in. They stop early
-    // once nobody needed a push (avoidance leaves little to do), which is
-    // decided from a maximum, so the same on any thread count.
-    if (a.size() == 0) return;
-    const uint32_t iterations = std::max(1u, s.separationIterations);
-    const float inverseOrderCell = 1.0f / neighbourCellSize();
-    const uint32_t ranges = (uint32_t(a.size()) + kGrain - 1) / kGrain;
-    std::vector<float> largestPush(ranges);
-    for (uint32_t iteration = 0; iteration < iterations; ++iteration) {
-        const std::vector<glm::vec2>& in = st.moved;
-        std::vector<glm::vec2>& out = st.nextVelocity; // free once integrate() used it
-        const bool neighbours = s.separationIterations > 0;
-        core::parallelForRanges(uint32_t(a.size()), kGrain, s.threads, [&](core::IndexRange range) {
-            float largest = 0.0f;
-            std::vector<Contact> contacts;
-            for (uint32_t i = range.begin; i < range.end; ++i) {
-                glm::vec2 p = in[i];
-                const float r = a.radius[i];
-                if (neighbours && (st.flags[i] & kCrowded)) {
-                    const float near = r + mLargestRadius + 2.0f * kQuerySlack;
-                    contacts.clear();
-                    mNeighbours->forEachNear(p, near, [&](uint32_t j, glm::vec2 was) {
-                        // Where j stood at the start of the step is within
-                        // the slack of where it is: far from that, no need
-                        // to look j up at all.
-                        if (j == i || glm::dot(p - was, p - was) > near * near) return;
-                        const glm::vec2 d = p - in[j];
-                        const float reach = r + a.radius[j];
-                        const float d2 = glm::dot(d, d);
-                        if (d2 >= reach * reach) return;
-                        const float distance = std::sqrt(d2);
-                        const glm::vec2 n = distance > 1e-5f ? d / distance : glm::vec2(i < j ? 1.0f : -1.0f, 0.0f);
-                        contacts.push_back({floorToInt(was.y * inverseOrderCell), floorToInt(was.x * inverseOrderCell), j,
-                                            0.5f * (reach - distance) * n});
-                    });
-                    // Few: an insertion sort.
-                    for (size_t k = 1; k < contacts.size(); ++k)
-                        for (size_t m = k; m > 0 && contacts[m] < contacts[m - 1]; --m) std::swap(contacts[m], contacts[m - 1]);
-                    glm::vec2 push(0.0f);
-                    for (const Contact& c : contacts) push += c.push;
-                    p += push;
-                    largest = std::max(largest, glm::dot(push, push));
-                }
-                if (st.flags[i] & kOnWalkable) p = keepOutOfWalls(p, r, in[i]);
-                out[i] = p;
-            }
-            largestPush[range.begin / kGrain] = largest;
-        });
-        st.moved.swap(st.nextVelocity);
-        if (*std::max_element(largestPush.begin(), largestPush.end()) < kSettled * kSettled) break;
-    }
 }
 
 void Crowd::arrive(uint32_t i) {

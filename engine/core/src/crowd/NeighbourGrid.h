@@ -59,6 +59,28 @@ public:
         });
     }
 
+    /// Cells, for marks kept beside the grid: 0 .. cellCount() - 1.
+    uint32_t cellCount() const { return uint32_t(mCellStart.size()); }
+    /// The cell an agent that stood at `p` at build() was sorted into.
+    uint32_t cellOf(glm::vec2 p) const {
+        const uint32_t tx = tileOf(p.x, mWidth), tz = tileOf(p.y, mHeight);
+        const TileCells& t = mTiles[tz * mTilesX + tx];
+        const glm::vec2 origin = glm::vec2(float(tx), float(tz)) * mTileSize;
+        const int32_t last = int32_t(t.side) - 1;
+        const int32_t cx = std::clamp(floorToInt((p.x - origin.x) * t.inverseCell), 0, last);
+        const int32_t cz = std::clamp(floorToInt((p.y - origin.y) * t.inverseCell), 0, last);
+        return t.first + uint32_t(cz) * t.side + uint32_t(cx);
+    }
+    /// Whether marked(cell) holds for any cell forEachNear(p, radius) reads.
+    template <class F>
+    bool anyCellNear(glm::vec2 p, float radius, F&& marked) const {
+        bool any = false;
+        forEachCellRow(p, radius, [&](uint32_t first, uint32_t last) {
+            for (uint32_t c = first; c <= last; ++c) any |= marked(c);
+        });
+        return any;
+    }
+
     /// The up to `count` (at most kMaxNearest) agents nearest `p` within
     /// `radius`, `self` left out, nearest first (equal distances by agent
     /// index), into `out`; returns how many. Looks within `closeRadius`
@@ -85,6 +107,12 @@ private:
     // within `radius` of `p` along both axes, tile by tile.
     template <class F>
     void forEachRun(glm::vec2 p, float radius, F&& f) const {
+        forEachCellRow(p, radius, [&](uint32_t first, uint32_t last) { f(mCellStart[first], mCellStart[last + 1]); });
+    }
+    // Calls f(first, last) for each row of the cells within `radius` of `p`
+    // along both axes, tile by tile: cells first .. last (inclusive).
+    template <class F>
+    void forEachCellRow(glm::vec2 p, float radius, F&& f) const {
         // Tiles found as the bins found them (the navigation cell, clamped,
         // then its tile), so the same float rounding puts an agent and a
         // query around it in the same tile.
@@ -102,8 +130,8 @@ private:
                 const int32_t cx1 = std::clamp(floorToInt((p.x + radius - origin.x) * t.inverseCell), 0, last);
                 const int32_t cz0 = std::clamp(floorToInt((p.y - radius - origin.y) * t.inverseCell), 0, last);
                 const int32_t cz1 = std::clamp(floorToInt((p.y + radius - origin.y) * t.inverseCell), 0, last);
-                const uint32_t* row = mCellStart.data() + t.first + uint32_t(cz0) * t.side;
-                for (int32_t cz = cz0; cz <= cz1; ++cz, row += t.side) f(row[cx0], row[cx1 + 1]);
+                uint32_t row = t.first + uint32_t(cz0) * t.side;
+                for (int32_t cz = cz0; cz <= cz1; ++cz, row += t.side) f(row + uint32_t(cx0), row + uint32_t(cx1));
             }
     }
 
