@@ -82,13 +82,22 @@ void Crowd::separate() {
     const float inverseOrderCell = 1.0f / neighbourCellSize();
     const uint32_t ranges = (uint32_t(a.size()) + kGrain - 1) / kGrain;
     std::vector<uint8_t> unsettled(ranges);
-    for (std::vector<uint8_t>& marks : st.movedIn) marks.assign(neighbours.cellCount(), 0);
+    // Clearing a mark per cell (a million cells for a million agents) is
+    // work for every core, not one.
+    auto clear = [&](std::vector<uint8_t>& marks) {
+        marks.resize(neighbours.cellCount());
+        core::parallelForRanges(uint32_t(marks.size()), 65536, s.threads, [&](core::IndexRange r) {
+            std::fill(marks.begin() + r.begin, marks.begin() + r.end, uint8_t(0));
+        });
+    };
+    clear(st.movedIn[0]);
+    clear(st.movedIn[1]);
     for (uint32_t iteration = 0; iteration < iterations; ++iteration) {
         const std::vector<glm::vec2>& in = st.moved;
         std::vector<glm::vec2>& out = st.nextVelocity; // free once integrate() used it
         const std::vector<uint8_t>& movedBefore = st.movedIn[iteration & 1];
         std::vector<uint8_t>& movedNow = st.movedIn[(iteration + 1) & 1];
-        if (iteration > 0) std::fill(movedNow.begin(), movedNow.end(), 0);
+        if (iteration > 0) clear(movedNow);
         core::parallelForRanges(uint32_t(a.size()), kGrain, s.threads, [&](core::IndexRange range) {
             bool goOn = false;
             std::vector<Contact> contacts;
