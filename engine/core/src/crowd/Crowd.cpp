@@ -49,11 +49,12 @@ Result<std::unique_ptr<Crowd>> Crowd::create(const terrain::Terrain& terrain, co
 CrowdMemory Crowd::estimateMemory(const terrain::Terrain& terrain, const CrowdSettings& settings, uint64_t agents,
                                   uint32_t groups) {
     // Published arrays, private state, neighbour grid and bins, as the sizes
-    // of their element types say (at most one cell per agent in the grid).
+    // of their element types say (at most about one grid cell per agent, and
+    // two marks per cell for separation).
     constexpr size_t kAgentBytes = sizeof(glm::vec3) + sizeof(glm::vec2) + 3 * sizeof(float) + sizeof(uint16_t) +
                                    sizeof(AgentClip) + sizeof(float) + sizeof(uint32_t) +            // published
                                    4 * sizeof(glm::vec2) + 2 * sizeof(float) + sizeof(uint16_t) + sizeof(uint8_t) + // state
-                                   3 * sizeof(uint32_t) + sizeof(glm::vec2) +                        // grid
+                                   2 * sizeof(uint32_t) + sizeof(glm::vec2) + 2 * sizeof(uint8_t) +  // grid, marks
                                    2 * sizeof(uint32_t) + sizeof(uint32_t);                          // bins, indexOf
     const glm::vec2 size = terrain.field().worldSize();
     const double cells = std::floor(double(size.x) / settings.cellSize) * std::floor(double(size.y) / settings.cellSize);
@@ -77,8 +78,8 @@ CrowdMemory Crowd::memory() const {
                         (a.heading.capacity() + a.radius.capacity() + a.preferredSpeed.capacity() +
                          a.phase.capacity()) * sizeof(float) +
                         a.goalGroup.capacity() * sizeof(uint16_t) + a.clip.capacity() * sizeof(AgentClip) +
-                        (a.id.capacity() + mIndexOf.capacity()) * sizeof(uint32_t) + mState->bytes() + mNeighbours->bytes() + mBins->agentBytes();
-    memory.fieldBytes = mNavigation->bytes() + mBins->tileBytes();
+                        (a.id.capacity() + mIndexOf.capacity()) * sizeof(uint32_t) + mState->bytes() + mNeighbours->agentBytes() + mBins->agentBytes();
+    memory.fieldBytes = mNavigation->bytes() + mBins->tileBytes() + mNeighbours->tileBytes();
     memory.bytesPerAgent = a.size() ? double(memory.agentBytes) / double(a.size()) : 0.0;
     return memory;
 }

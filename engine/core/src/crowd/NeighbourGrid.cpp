@@ -130,9 +130,10 @@ uint32_t NeighbourGrid::nearest(glm::vec2 p, uint32_t self, float closeRadius, f
     return kept;
 }
 
-size_t NeighbourGrid::bytes() const {
-    return mTiles.capacity() * sizeof(TileCells) + (mCellStart.capacity() + mAgent.capacity()) * sizeof(uint32_t) +
-           mPosition.capacity() * sizeof(glm::vec2);
+size_t NeighbourGrid::agentBytes() const {
+    return (mCellStart.capacity() + mAgent.capacity()) * sizeof(uint32_t) + mPosition.capacity() * sizeof(glm::vec2);
 }
+
+size_t NeighbourGrid::tileBytes() const { return mTiles.capacity() * sizeof(TileCells); }
 
 } // namespace tessera::crowd

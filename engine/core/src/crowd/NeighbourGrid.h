@@ -90,8 +90,10 @@ public:
                      NearAgent* out) const;
     static constexpr uint32_t kMaxNearest = 16;
 
-    /// Bytes held (for the memory figures).
-    size_t bytes() const;
+    /// Bytes held that grow with the agents (cells and slots), and with the
+    /// navigation tiles (for the memory figures).
+    size_t agentBytes() const;
+    size_t tileBytes() const;
 
 private:
     // Where tile t's cells are: mCellStart[first] .. mCellStart[first + side * side]
