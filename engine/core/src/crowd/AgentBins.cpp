@@ -4,6 +4,9 @@
 #include "tessera/core/ParallelFor.h"
 
 #include <algorithm>
+#include <cfloat>
+
+#include <glm/common.hpp>
 #include <utility>
 
 namespace tessera::crowd {
@@ -45,13 +48,15 @@ void AgentBins::build(std::span<const glm::vec3> positions, std::span<const floa
     core::parallelForRanges(uint32_t(mOccupied.size()), 16, threads, [&](core::IndexRange range) {
         for (uint32_t k = range.begin; k < range.end; ++k) {
             const uint32_t t = mOccupied[k];
-            scene::Aabb box = scene::Aabb::empty();
+            // Corners by min and max inline (what Aabb::expand does, without
+            // two calls per agent).
+            glm::vec3 lo(FLT_MAX), hi(-FLT_MAX);
             for (uint32_t a : agentsIn(t)) {
                 const glm::vec3 p = positions[a];
-                box.expand(p - glm::vec3(radius[a], 0.0f, radius[a]));
-                box.expand(p + glm::vec3(radius[a], height, radius[a]));
+                lo = glm::min(lo, p - glm::vec3(radius[a], 0.0f, radius[a]));
+                hi = glm::max(hi, p + glm::vec3(radius[a], height, radius[a]));
             }
-            base[t] = box;
+            base[t] = scene::Aabb{lo, hi};
         }
     });
     for (size_t level = 1; level < mLevels.size(); ++level) {

@@ -34,6 +34,8 @@ public:
     }
     /// Every agent, grouped by tile in tile order.
     std::span<const uint32_t> order() const { return mAgents; }
+    /// Per tile, where its agents begin in order(); one more at the end.
+    std::span<const uint32_t> starts() const { return mStart; }
     /// Tiles holding at least one agent, ascending.
     std::span<const uint32_t> occupiedTiles() const { return mOccupied; }
     /// Every agent's box together (empty without agents).

@@ -7,15 +7,6 @@
 
 namespace tessera::crowd {
 
-AgentGait AgentGait::of(const CrowdSettings& s, float radius) {
-    AgentGait gait;
-    gait.stride = s.walkStrideLength * radius / s.strideRadius;
-    const float natural = gait.stride / s.walkCycleSeconds;
-    gait.slowest = s.minWalkRate * natural;
-    gait.fastest = s.maxWalkRate * natural;
-    return gait;
-}
-
 glm::vec2 AgentGait::walkable(glm::vec2 limited, glm::vec2 chosen) const {
     const float speed = glm::length(limited);
     if (speed > fastest) return limited * (fastest / speed);

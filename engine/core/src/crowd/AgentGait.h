@@ -20,7 +20,14 @@ struct AgentGait {
     float fastest = 0.0f; ///< m/s
 
     /// The gait of an agent of `radius` (strides scale with the radius).
-    static AgentGait of(const CrowdSettings& settings, float radius);
+    static AgentGait of(const CrowdSettings& settings, float radius) {
+        AgentGait gait;
+        gait.stride = settings.walkStrideLength * radius / settings.strideRadius;
+        const float natural = gait.stride / settings.walkCycleSeconds;
+        gait.slowest = settings.minWalkRate * natural;
+        gait.fastest = settings.maxWalkRate * natural;
+        return gait;
+    }
 
     /// The velocity to take from `limited` (the chosen velocity after the
     /// acceleration limit) when `chosen` is what avoidance asked for: at

@@ -17,14 +17,16 @@ enum AgentFlag : uint8_t {
     kUnreachable = 1u << 3, ///< no route to the goal from here
     kArrived = 1u << 4,     ///< reached its goal during this step
     kCrowded = 1u << 5,     ///< a neighbour close enough to touch it by the end of the step
+    kMoved = 1u << 6,       ///< separation's last iteration moved it
+    kPushed = 1u << 7,      ///< separation's last push on it was one to go on for
 };
 
 struct AgentState {
-    /// Avoidance's choice, applied by integrate(); then separation's second
+    /// Avoidance's choice, swapped into CrowdAgents::velocity by
+    /// integrate(); then (holding the old velocities) separation's second
     /// buffer of positions.
     std::vector<glm::vec2> nextVelocity;
-    /// XZ after motion and separation; during steer(), each agent's yield
-    /// weight (in x).
+    /// XZ after motion (written by steer()) and separation.
     std::vector<glm::vec2> moved;
     std::vector<glm::vec2> anchor;        ///< where it stood when it last made progress
     std::vector<float> stuckTime;         ///< seconds since it last got closer
@@ -34,6 +36,9 @@ struct AgentState {
     std::vector<glm::vec2> spot;
     std::vector<uint16_t> arrivals;       ///< goals reached (seeds the next choice)
     std::vector<uint8_t> flags;
+    /// Separation's marks per neighbour-grid cell: an agent sorted into it
+    /// moved in the last iteration (read), in this one (written).
+    std::vector<uint8_t> movedIn[2];
 
     void resize(size_t n) {
         nextVelocity.resize(n);
@@ -49,7 +54,8 @@ struct AgentState {
     size_t bytes() const {
         return (nextVelocity.capacity() + moved.capacity() + anchor.capacity() + spot.capacity()) * sizeof(glm::vec2) +
                (stuckTime.capacity() + fleeTime.capacity()) * sizeof(float) +
-               arrivals.capacity() * sizeof(uint16_t) + flags.capacity();
+               arrivals.capacity() * sizeof(uint16_t) + flags.capacity() + movedIn[0].capacity() +
+               movedIn[1].capacity();
     }
 };
 

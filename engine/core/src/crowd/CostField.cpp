@@ -52,11 +52,6 @@ CostField::CostField(const NavGrid& grid, const CrowdSettings& settings)
 
 CostField::~CostField() = default;
 
-bool CostField::passableAt(glm::vec2 p) const {
-    const glm::ivec2 c = mGrid.cellOf(p);
-    return mGrid.inGrid(c.x, c.y) && passable(mGrid.index(uint32_t(c.x), uint32_t(c.y)));
-}
-
 float CostField::highestCost(uint32_t cell) const {
     const uint32_t i = cell % mGrid.width(), j = cell / mGrid.width();
     const DirectedCosts* directed = mDirected[mGrid.tileOf(i, j)].get();
@@ -141,25 +136,6 @@ void CostField::crowdAt(glm::vec2 p, float& count, glm::vec2& velocity) const {
     const Samples::Cell& cell = samples->cells[size_t((c.y % kTile) * kTile + c.x % kTile)];
     count = float(cell.count);
     velocity = cell.velocity;
-}
-
-float CostField::oncoming(glm::vec2 p, glm::vec2 direction) const {
-    // Over about 3 x 3 metres at least: the cell alone where cells are that
-    // large (the content map's 4 m), else the 3 x 3 cells around it.
-    const glm::ivec2 c = mGrid.cellOf(p);
-    const int32_t reach = mGrid.cellSize() >= 3.0f ? 0 : 1;
-    float against = 0.0f;
-    for (int32_t j = c.y - reach; j <= c.y + reach; ++j)
-        for (int32_t i = c.x - reach; i <= c.x + reach; ++i) {
-            if (!mGrid.inGrid(i, j)) continue;
-            const Samples* samples = mSamples[mGrid.tileOf(uint32_t(i), uint32_t(j))].get();
-            if (!samples) continue;
-            const auto& intent = samples->cells[size_t((j % kTile) * kTile + i % kTile)].intent;
-            against += std::max(direction.x, 0.0f) * intent[kMinusX] + std::max(-direction.x, 0.0f) * intent[kPlusX] +
-                       std::max(direction.y, 0.0f) * intent[kMinusZ] + std::max(-direction.y, 0.0f) * intent[kPlusZ];
-        }
-    const float side = float(2 * reach + 1) * mGrid.cellSize();
-    return against / (side * side);
 }
 
 float CostField::densityFraction(float count) const {

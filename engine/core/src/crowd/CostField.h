@@ -7,6 +7,7 @@
 #include "tessera/crowd/CrowdSettings.h"
 #include "tessera/crowd/NavGrid.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -70,7 +71,10 @@ public:
     std::span<const float> cost() const { return mCost; }
     bool passable(uint32_t cell) const { return mCost[cell] < NavGrid::kImpassable; }
     /// Whether world point `p` lies on a passable cell of the grid.
-    bool passableAt(glm::vec2 p) const;
+    bool passableAt(glm::vec2 p) const {
+        const glm::ivec2 c = mGrid.cellOf(p);
+        return mGrid.inGrid(c.x, c.y) && passable(mGrid.index(uint32_t(c.x), uint32_t(c.y)));
+    }
     /// The directed costs of `tile`, or null where every direction costs cost().
     const DirectedCosts* directed(uint32_t tile) const { return mDirected[tile].get(); }
     /// The agents counted in the cell under world point `p` at the last
@@ -98,7 +102,26 @@ public:
     bool hasSamples(uint32_t tile) const { return mSamples[tile] != nullptr; }
     /// Agents per square metre around `p` (3 x 3 cells) that want to walk
     /// against unit `direction`, here or a few metres on.
-    float oncoming(glm::vec2 p, glm::vec2 direction) const;
+    /// (Inline, as passableAt: every walking agent asks once a step.)
+    float oncoming(glm::vec2 p, glm::vec2 direction) const {
+        // Over about 3 x 3 metres at least: the cell alone where cells are
+        // that large (the content map's 4 m), else the 3 x 3 cells around it.
+        constexpr int32_t n = int32_t(NavGrid::kTileCells);
+        const glm::ivec2 c = mGrid.cellOf(p);
+        const int32_t reach = mGrid.cellSize() >= 3.0f ? 0 : 1;
+        float against = 0.0f;
+        for (int32_t j = c.y - reach; j <= c.y + reach; ++j)
+            for (int32_t i = c.x - reach; i <= c.x + reach; ++i) {
+                if (!mGrid.inGrid(i, j)) continue;
+                const Samples* samples = mSamples[mGrid.tileOf(uint32_t(i), uint32_t(j))].get();
+                if (!samples) continue;
+                const auto& intent = samples->cells[size_t((j % n) * n + i % n)].intent;
+                against += std::max(direction.x, 0.0f) * intent[kMinusX] + std::max(-direction.x, 0.0f) * intent[kPlusX] +
+                           std::max(direction.y, 0.0f) * intent[kMinusZ] + std::max(-direction.y, 0.0f) * intent[kPlusZ];
+            }
+        const float side = float(2 * reach + 1) * mGrid.cellSize();
+        return against / (side * side);
+    }
     /// Recomputes every cell of `tiles` (ascending, distinct) and records
     /// what changed.
     void recomputeTiles(std::span<const uint32_t> tiles, CostChanges& changes, uint32_t threads);

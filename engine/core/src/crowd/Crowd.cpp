@@ -4,7 +4,7 @@
 #include "AgentState.h"
 #include "CrowdChecks.h"
 #include "Navigation.h"
-#include "SpatialHash.h"
+#include "NeighbourGrid.h"
 #include "tessera/profiler/CpuScope.h"
 #include "tessera/scene/SceneGraph.h"
 
@@ -16,7 +16,7 @@ namespace tessera::crowd {
 Crowd::Crowd(const terrain::Terrain& terrain, const CrowdSettings& settings, std::span<const GoalGroup> goals)
     : mTerrain(terrain), mSettings(settings), mGoals(goals.begin(), goals.end()), mState(std::make_unique<AgentState>()),
       mNavigation(std::make_unique<Navigation>(terrain, settings, goals)),
-      mBins(std::make_unique<AgentBins>(mNavigation->grid())), mHash(std::make_unique<SpatialHash>()),
+      mBins(std::make_unique<AgentBins>(mNavigation->grid())), mNeighbours(std::make_unique<NeighbourGrid>()),
       mSplatsSeen(terrain.splatHistory().size()) {}
 
 Crowd::~Crowd() { detach(); }
@@ -48,12 +48,13 @@ Result<std::unique_ptr<Crowd>> Crowd::create(const terrain::Terrain& terrain, co
 
 CrowdMemory Crowd::estimateMemory(const terrain::Terrain& terrain, const CrowdSettings& settings, uint64_t agents,
                                   uint32_t groups) {
-    // Published arrays, private state, hash and bins, as the sizes of their
-    // element types say (one bucket per agent in the hash).
+    // Published arrays, private state, neighbour grid and bins, as the sizes
+    // of their element types say (at most about one grid cell per agent, and
+    // two marks per cell for separation).
     constexpr size_t kAgentBytes = sizeof(glm::vec3) + sizeof(glm::vec2) + 3 * sizeof(float) + sizeof(uint16_t) +
                                    sizeof(AgentClip) + sizeof(float) + sizeof(uint32_t) +            // published
                                    4 * sizeof(glm::vec2) + 2 * sizeof(float) + sizeof(uint16_t) + sizeof(uint8_t) + // state
-                                   3 * sizeof(uint32_t) + sizeof(glm::vec2) +                        // hash
+                                   2 * sizeof(uint32_t) + sizeof(glm::vec2) + 2 * sizeof(uint8_t) +  // grid, marks
                                    2 * sizeof(uint32_t) + sizeof(uint32_t);                          // bins, indexOf
     const glm::vec2 size = terrain.field().worldSize();
     const double cells = std::floor(double(size.x) / settings.cellSize) * std::floor(double(size.y) / settings.cellSize);
@@ -77,8 +78,8 @@ CrowdMemory Crowd::memory() const {
                         (a.heading.capacity() + a.radius.capacity() + a.preferredSpeed.capacity() +
                          a.phase.capacity()) * sizeof(float) +
                         a.goalGroup.capacity() * sizeof(uint16_t) + a.clip.capacity() * sizeof(AgentClip) +
-                        (a.id.capacity() + mIndexOf.capacity()) * sizeof(uint32_t) + mState->bytes() + mHash->bytes() + mBins->agentBytes();
-    memory.fieldBytes = mNavigation->bytes() + mBins->tileBytes();
+                        (a.id.capacity() + mIndexOf.capacity()) * sizeof(uint32_t) + mState->bytes() + mNeighbours->agentBytes() + mBins->agentBytes();
+    memory.fieldBytes = mNavigation->bytes() + mBins->tileBytes() + mNeighbours->tileBytes();
     memory.bytesPerAgent = a.size() ? double(memory.agentBytes) / double(a.size()) : 0.0;
     return memory;
 }
@@ -89,12 +90,12 @@ OverlapReport Crowd::measureOverlap() const {
     const uint32_t n = uint32_t(pos.size());
     float largest = 0.0f;
     for (float r : mAgents.radius) largest = std::max(largest, r);
-    SpatialHash hash;
-    hash.build(pos, std::max(2.0f * largest, 0.5f), mSettings.threads);
+    NeighbourGrid grid;
+    grid.build(pos, tileAgents(), std::max(2.0f * largest, 0.5f), mSettings.threads);
     std::vector<uint8_t> involved(n, 0);
     for (uint32_t i = 0; i < n; ++i) {
         const glm::vec2 p(pos[i].x, pos[i].z);
-        hash.forEachNear(p, mAgents.radius[i] + largest, [&](uint32_t j, glm::vec2 q) {
+        grid.forEachNear(p, mAgents.radius[i] + largest, [&](uint32_t j, glm::vec2 q) {
             if (j <= i) return;
             const float reach = mAgents.radius[i] + mAgents.radius[j];
             const float overlap = (reach - glm::distance(p, q)) / reach;

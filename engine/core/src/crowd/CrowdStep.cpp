@@ -6,7 +6,8 @@
 #include "AgentState.h"
 #include "Avoidance.h"
 #include "Navigation.h"
-#include "SpatialHash.h"
+#include "NeighbourGrid.h"
+#include "StepTuning.h"
 #include "tessera/crowd/FloorToInt.h"
 #include "tessera/core/ParallelFor.h"
 #include "tessera/core/Random.h"
@@ -21,12 +22,6 @@
 namespace tessera::crowd {
 namespace {
 
-// Agents per parallel task: enough work to amortise scheduling, small
-// enough to balance. Fixed, so the split never depends on the thread count.
-constexpr uint32_t kGrain = 256;
-// How far an agent may move in one step plus what separation may add, for
-// neighbour queries made with the hash built before the step moved anyone.
-constexpr float kQuerySlack = 0.15f;
 // Walls (impassable cells) are avoided this many seconds ahead; the nearest
 // kMaxWalls cells within reach count.
 constexpr float kWallHorizon = 1.0f;
@@ -35,8 +30,6 @@ constexpr uint32_t kMaxWalls = 8;
 constexpr uint64_t kReorderSteps = 32;
 // Agents per range of the statistics' parallel count.
 constexpr uint32_t kStatsGrain = 16384;
-// Separation stops once no agent needed a push longer than this (metres).
-constexpr float kSettled = 1e-3f;
 // An arrival at a Stay goal picks its spot up to this far on (metres)...
 constexpr float kStaySpotRange = 8.0f;
 // ...and has reached it when closer than this.
@@ -76,7 +69,22 @@ glm::vec2 rotate(glm::vec2 v, float angle) {
 
 float wrapAngle(float a) {
     constexpr float pi = std::numbers::pi_v<float>;
-    return a - 2.0f * pi * float(floorToInt((a + pi) / (2.0f * pi)));
+    return a - 2.0f * pi * float(floorToInt((a + pi) * (0.5f / pi)));
+}
+
+// atan2(y, x) for x, y not both zero, within 2e-6 radians: an odd minimax
+// polynomial for atan on [0, 1], then the octant. Only the heading uses it,
+// which nothing in the simulation reads back; libm's atan2f was 4% of a
+// step's instructions.
+float headingAngle(float y, float x) {
+    constexpr float pi = std::numbers::pi_v<float>;
+    const float ax = std::abs(x), ay = std::abs(y);
+    const float t = std::min(ax, ay) / std::max(ax, ay), t2 = t * t;
+    float r = t * (0.99997726f +
+                   t2 * (-0.33262347f + t2 * (0.19354346f + t2 * (-0.11643287f + t2 * (0.05265332f + t2 * -0.01172120f)))));
+    if (ay > ax) r = 0.5f * pi - r;
+    if (x < 0.0f) r = pi - r;
+    return y < 0.0f ? -r : r;
 }
 
 glm::vec2 xz(const glm::vec3& p) { return {p.x, p.z}; }
@@ -104,7 +112,7 @@ void Crowd::step() {
     const auto fieldsDone = Clock::now();
     {
         TESSERA_CPU_SCOPE("crowd.avoidance");
-        mHash->build(mAgents.position, hashCellSize(), mSettings.threads);
+        mNeighbours->build(mAgents.position, tileAgents(), neighbourCellSize(), mSettings.threads);
         steer();
     }
     const auto avoidanceDone = Clock::now();
@@ -121,7 +129,12 @@ void Crowd::step() {
     mTimings.integration = millisecondsSince(avoidanceDone);
 }
 
-float Crowd::hashCellSize() const {
+TileAgents Crowd::tileAgents() const {
+    const NavGrid& grid = navGrid();
+    return {mBins->order(), mBins->starts(), mBins->occupiedTiles(), grid.cellSize(), grid.width(), grid.height()};
+}
+
+float Crowd::neighbourCellSize() const {
     // About two agents per cell where they are: smaller cells waste
     // lookups on empty cells in a sparse crowd, larger ones make a dense
     // crowd's queries wade through agents out of reach. The ground they
@@ -177,25 +190,33 @@ void Crowd::steer() {
     const Navigation& nav = *mNavigation;
     const CostField& cost = nav.cost();
     const NavGrid& grid = nav.grid();
-    const float neighbourRadius2 = s.neighbourRadius * s.neighbourRadius;
-    const float closeRadius = 0.5f * s.neighbourRadius, closeRadius2 = closeRadius * closeRadius;
+    const float closeRadius = 0.5f * s.neighbourRadius;
     // With cells as large as the close radius, looking close first saves
     // nothing: one look over the whole radius.
-    const bool sparse = mHash->cellSize() >= closeRadius;
+    const bool sparse = neighbourCellSize() >= closeRadius;
     const float maxStep = mFastest * s.fleeSpeedFactor * s.timeStep;
     const float maxDelta = s.maxAcceleration * s.timeStep;
+    const float dt = s.timeStep;
+    const float maxTurn = s.maxTurnRate * dt;
     AgentState& st = *mState;
     CrowdAgents& a = mAgents;
-    // How much each agent gives way, once per agent rather than once per
-    // agent that has it for a neighbour (a square root and a division, ten
-    // times over). Kept in the x of integrate()'s buffer, free until then.
-    std::vector<glm::vec2>& yield = st.moved;
+    // What integrate() did, once an agent's new velocity is known: its spot
+    // after moving (separation's input), its heading and what is left of
+    // its fleeing. Here, in the loop that already has the agent in cache,
+    // rather than a pass of its own over every agent. The velocity itself
+    // waits in nextVelocity (neighbours still read the old one).
+    auto move = [&](uint32_t i, glm::vec2 v) {
+        st.nextVelocity[i] = v;
+        st.moved[i] = xz(a.position[i]) + v * dt;
+        if (v != glm::vec2(0.0f)) {
+            const float turn = wrapAngle(headingAngle(v.x, v.y) - a.heading[i]);
+            a.heading[i] = wrapAngle(a.heading[i] + std::clamp(turn, -maxTurn, maxTurn));
+        }
+        st.fleeTime[i] = std::max(0.0f, st.fleeTime[i] - dt);
+    };
     core::parallelForRanges(count, kGrain, s.threads, [&](core::IndexRange range) {
-        for (uint32_t i = range.begin; i < range.end; ++i) yield[i].x = yieldWeight(a.velocity[i], a.preferredSpeed[i]);
-    });
-    core::parallelForRanges(count, kGrain, s.threads, [&](core::IndexRange range) {
-        Neighbour near[16];
-        float nearDistance[16];
+        NearAgent nearby[NeighbourGrid::kMaxNearest];
+        Neighbour near[NeighbourGrid::kMaxNearest];
         WallPoint walls[kMaxWalls];
         float wallDistance[kMaxWalls];
         std::vector<VelocityLine> lines;
@@ -240,38 +261,20 @@ void Crowd::steer() {
             // someone may be pushing.
             if (preferred == glm::vec2(0.0f) && a.velocity[i] == glm::vec2(0.0f)) {
                 st.flags[i] = flags | kCrowded;
-                st.nextVelocity[i] = glm::vec2(0.0f);
+                move(i, glm::vec2(0.0f));
                 continue;
             }
-            // The nearest neighbours, by distance then index. Looked for close
-            // by first: in a dense crowd that finds them all at a fraction of
-            // the cost; the rest of the radius only when it did not.
-            uint32_t found = 0;
-            const uint32_t cap = s.maxNeighbours;
-            auto consider = [&](uint32_t j, glm::vec2 q, float lo2, float hi2) {
-                if (j == i) return;
-                const glm::vec2 offset = q - p;
-                const float d = glm::dot(offset, offset);
-                if (d <= lo2 || d > hi2 || (found == cap && d >= nearDistance[cap - 1])) return;
-                uint32_t k = found < cap ? found++ : cap - 1;
-                while (k > 0 && nearDistance[k - 1] > d) {
-                    near[k] = near[k - 1];
-                    nearDistance[k] = nearDistance[k - 1];
-                    --k;
-                }
-                near[k] = {offset, a.velocity[j], a.radius[j], j};
-                nearDistance[k] = d;
-            };
-            if (!sparse) mHash->forEachNear(p, closeRadius, [&](uint32_t j, glm::vec2 q) { consider(j, q, -1.0f, closeRadius2); });
-            if (sparse || found < cap)
-                mHash->forEachNear(p, s.neighbourRadius, [&](uint32_t j, glm::vec2 q) {
-                    consider(j, q, sparse ? -1.0f : closeRadius2, neighbourRadius2);
-                });
+            // The nearest neighbours, by distance then index.
+            // Looked for close by first: in a dense crowd that finds them all
+            // at a fraction of the cost; the rest of the radius only when it
+            // did not.
+            const uint32_t found = mNeighbours->nearest(p, i, sparse ? s.neighbourRadius : closeRadius, s.neighbourRadius,
+                                                  s.maxNeighbours, nearby);
             // Whether anybody is near enough to touch it by the end of the
             // step (both walking at most maxStep): separation looks only at
             // such agents.
             const float touch = a.radius[i] + mLargestRadius + 2.0f * maxStep;
-            if (found > 0 && nearDistance[0] < touch * touch) flags |= kCrowded;
+            if (found > 0 && nearby[0].distance2 < touch * touch) flags |= kCrowded;
             st.flags[i] = flags;
             // Walking its field, an agent keeps right of those who want to
             // come the other way just ahead (standing or walking): the more
@@ -336,9 +339,14 @@ void Crowd::steer() {
             }
             // Who gives way: an agent held up (slower than it wants) more than
             // one walking freely, so a stream comes through a waiting crowd
-            // rather than the crowd pressing into the stream.
-            const float weight = yield[i].x;
-            for (uint32_t k = 0; k < found; ++k) near[k].share = weight / (weight + yield[near[k].agent].x);
+            // rather than the crowd pressing into the stream. The neighbours'
+            // velocities and radii are read only for the few kept.
+            const float weight = yieldWeight(a.velocity[i], speed);
+            for (uint32_t k = 0; k < found; ++k) {
+                const uint32_t j = nearby[k].agent;
+                const float share = weight / (weight + yieldWeight(a.velocity[j], a.preferredSpeed[j]));
+                near[k] = {nearby[k].offset, a.velocity[j], a.radius[j], j, share};
+            }
             AvoidanceQuery query{a.velocity[i], preferred, maxSpeed, a.radius[i], s.comfortMargin,
                                  s.horizonSeconds, kWallHorizon, s.timeStep};
             const glm::vec2 chosen = avoidCollisions(query, std::span<const Neighbour>(near, found),
@@ -346,97 +354,15 @@ void Crowd::steer() {
             const glm::vec2 delta = chosen - a.velocity[i];
             const float change = glm::length(delta);
             const glm::vec2 limited = change > maxDelta ? a.velocity[i] + delta * (maxDelta / change) : chosen;
-            st.nextVelocity[i] = gait.walkable(limited, chosen);
+            move(i, gait.walkable(limited, chosen));
         }
     });
 }
 
 void Crowd::integrate() {
-    const CrowdSettings& s = mSettings;
-    AgentState& st = *mState;
-    CrowdAgents& a = mAgents;
-    const float dt = s.timeStep;
-    const float maxTurn = s.maxTurnRate * dt;
-    core::parallelForRanges(uint32_t(a.size()), kGrain, s.threads, [&](core::IndexRange range) {
-        for (uint32_t i = range.begin; i < range.end; ++i) {
-            const glm::vec2 v = st.nextVelocity[i];
-            a.velocity[i] = v;
-            st.moved[i] = xz(a.position[i]) + v * dt;
-            if (v != glm::vec2(0.0f)) {
-                const float turn = wrapAngle(std::atan2(v.x, v.y) - a.heading[i]);
-                a.heading[i] = wrapAngle(a.heading[i] + std::clamp(turn, -maxTurn, maxTurn));
-            }
-            st.fleeTime[i] = std::max(0.0f, st.fleeTime[i] - dt);
-        }
-    });
-}
-
-void Crowd::separate() {
-    const CrowdSettings& s = mSettings;
-    AgentState& st = *mState;
-    const CrowdAgents& a = mAgents;
-    const CostField& cost = mNavigation->cost();
-    const NavGrid& grid = navGrid();
-    const float h = grid.cellSize();
-    // Pushes `p` out of the impassable cells around it (and back onto its
-    // previous spot if it walked right into one).
-    auto keepOutOfWalls = [&](glm::vec2 p, float r, glm::vec2 previous) {
-        if (!cost.passableAt(p)) p = previous;
-        const glm::ivec2 c = grid.cellOf(p);
-        for (int32_t j = c.y - 1; j <= c.y + 1; ++j)
-            for (int32_t i = c.x - 1; i <= c.x + 1; ++i) {
-                if (grid.inGrid(i, j) && cost.passable(grid.index(uint32_t(i), uint32_t(j)))) continue;
-                const glm::vec2 lo = glm::vec2(float(i), float(j)) * h;
-                const glm::vec2 d = p - glm::clamp(p, lo, lo + h);
-                const float d2 = glm::dot(d, d);
-                if (d2 < r * r && d2 > 1e-12f) p += d * (r / std::sqrt(d2) - 1.0f);
-            }
-        return p;
-    };
-    // Jacobi iterations, each reading the positions of the last: the result
-    // does not depend on the order agents are visited in. They stop early
-    // once nobody needed a push (avoidance leaves little to do), which is
-    // decided from a maximum, so the same on any thread count.
-    if (a.size() == 0) return;
-    const uint32_t iterations = std::max(1u, s.separationIterations);
-    const uint32_t ranges = (uint32_t(a.size()) + kGrain - 1) / kGrain;
-    std::vector<float> largestPush(ranges);
-    for (uint32_t iteration = 0; iteration < iterations; ++iteration) {
-        const std::vector<glm::vec2>& in = st.moved;
-        std::vector<glm::vec2>& out = st.nextVelocity; // free once integrate() used it
-        const bool neighbours = s.separationIterations > 0;
-        core::parallelForRanges(uint32_t(a.size()), kGrain, s.threads, [&](core::IndexRange range) {
-            float largest = 0.0f;
-            for (uint32_t i = range.begin; i < range.end; ++i) {
-                glm::vec2 p = in[i];
-                const float r = a.radius[i];
-                if (neighbours && (st.flags[i] & kCrowded)) {
-                    glm::vec2 push(0.0f);
-                    const float near = r + mLargestRadius + 2.0f * kQuerySlack;
-                    mHash->forEachNear(p, near, [&](uint32_t j, glm::vec2 was) {
-                        // Where j stood at the start of the step is within
-                        // the slack of where it is: far from that, no need
-                        // to look j up at all.
-                        if (j == i || glm::dot(p - was, p - was) > near * near) return;
-                        const glm::vec2 d = p - in[j];
-                        const float reach = r + a.radius[j];
-                        const float d2 = glm::dot(d, d);
-                        if (d2 >= reach * reach) return;
-                        const float distance = std::sqrt(d2);
-                        const glm::vec2 n = distance > 1e-5f ? d / distance : glm::vec2(i < j ? 1.0f : -1.0f, 0.0f);
-                        push += 0.5f * (reach - distance) * n;
-                    });
-                    p += push;
-                    largest = std::max(largest, glm::dot(push, push));
-                }
-                if (st.flags[i] & kOnWalkable) p = keepOutOfWalls(p, r, in[i]);
-                out[i] = p;
-            }
-            largestPush[range.begin / kGrain] = largest;
-        });
-        st.moved.swap(st.nextVelocity);
-        if (*std::max_element(largestPush.begin(), largestPush.end()) < kSettled * kSettled) break;
-    }
+    // steer() moved every agent already; the new velocities become the
+    // published ones (the old ones' buffer is separation's scratch next).
+    mAgents.velocity.swap(mState->nextVelocity);
 }
 
 void Crowd::arrive(uint32_t i) {

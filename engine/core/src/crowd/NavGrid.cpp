@@ -52,11 +52,6 @@ bool NavGrid::walkable(glm::vec2 p) const {
     return inGrid(c.x, c.y) && std::isfinite(mTerrainCost[index(uint32_t(c.x), uint32_t(c.y))]);
 }
 
-float NavGrid::speedFactor(uint32_t i) const {
-    const float cost = mTerrainCost[i];
-    return std::isfinite(cost) ? 1.0f / cost : 0.0f;
-}
-
 float NavGrid::costFromSlope(float slope) const {
     if (!(slope <= mMaxSlope)) return kImpassable;
     const float t = slope / mMaxSlope;

@@ -11,10 +11,6 @@ PotentialField::PotentialField(const NavGrid& grid, const Region& goal)
     : mGrid(&grid), mGoal(goal), mPhi(grid.cellCount(), kUnreachable), mTileKey(grid.tileCount(), 0.0f),
       mTileActive(grid.tileCount(), 0), mMark(grid.cellCount(), 0) {}
 
-float PotentialField::cellValue(int32_t i, int32_t j) const {
-    return mGrid->inGrid(i, j) ? mPhi[mGrid->index(uint32_t(i), uint32_t(j))] : kUnreachable;
-}
-
 float PotentialField::sample(glm::vec2 p) const {
     const float h = mGrid->cellSize();
     const glm::vec2 f = p / h - 0.5f;
@@ -38,7 +34,21 @@ glm::vec2 PotentialField::descent(glm::vec2 p) const {
     const glm::vec2 f = p / h - 0.5f;
     const int32_t i = floorToInt(f.x), j = floorToInt(f.y);
     const float tx = f.x - float(i), tz = f.y - float(j);
-    float v00 = cellValue(i, j), v10 = cellValue(i + 1, j), v01 = cellValue(i, j + 1), v11 = cellValue(i + 1, j + 1);
+    float v00, v10, v01, v11;
+    // Inside the grid, two reads of two cells each (every walking agent
+    // asks, every step); at the edges, cell by cell.
+    if (i >= 0 && j >= 0 && uint32_t(i) + 1 < mGrid->width() && uint32_t(j) + 1 < mGrid->height()) {
+        const float* row = mPhi.data() + mGrid->index(uint32_t(i), uint32_t(j));
+        v00 = row[0], v10 = row[1], v01 = row[mGrid->width()], v11 = row[mGrid->width() + 1];
+    } else {
+        v00 = cellValue(i, j), v10 = cellValue(i + 1, j), v01 = cellValue(i, j + 1), v11 = cellValue(i + 1, j + 1);
+    }
+    // All reachable (nearly always): no walls to stand in for.
+    if (std::max(std::max(v00, v10), std::max(v01, v11)) < kUnreachable) {
+        const glm::vec2 gradient((v10 - v00) * (1 - tz) + (v11 - v01) * tz, (v01 - v00) * (1 - tx) + (v11 - v10) * tx);
+        const float length = glm::length(gradient);
+        return length > 1e-6f * h ? -gradient / length : glm::vec2(0.0f);
+    }
     float highest = -1.0f;
     for (float v : {v00, v10, v01, v11})
         if (v < kUnreachable) highest = std::max(highest, v);

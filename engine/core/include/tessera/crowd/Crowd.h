@@ -33,7 +33,8 @@ namespace tessera::crowd {
 
 class Navigation;
 class AgentBins;
-class SpatialHash;
+class NeighbourGrid;
+struct TileAgents;
 struct AgentState;
 
 /// A crowd on a terrain. Each step():
@@ -114,7 +115,8 @@ public:
 private:
     Crowd(const terrain::Terrain& terrain, const CrowdSettings& settings, std::span<const GoalGroup> goals);
     Status spawn(std::span<const SpawnPattern> spawns);
-    float hashCellSize() const;
+    float neighbourCellSize() const;
+    TileAgents tileAgents() const;
     void reactToTerrain();
     void splatDensity();
     void steer();
@@ -133,7 +135,7 @@ private:
     std::unique_ptr<AgentState> mState;
     std::unique_ptr<Navigation> mNavigation;
     std::unique_ptr<AgentBins> mBins;
-    std::unique_ptr<SpatialHash> mHash;
+    std::unique_ptr<NeighbourGrid> mNeighbours;
     size_t mSplatsSeen = 0;
     float mLargestRadius = 0.0f;
     float mFastest = 0.0f; ///< the highest preferred speed

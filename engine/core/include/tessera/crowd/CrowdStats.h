@@ -27,7 +27,7 @@ struct CrowdStats {
 /// Milliseconds spent in each phase of the last step (steady clock).
 struct CrowdTimings {
     double fields = 0.0;      ///< craters, hazards, density splat, eikonal solves
-    double avoidance = 0.0;   ///< spatial hash, steering, ORCA
+    double avoidance = 0.0;   ///< neighbour grid, steering, ORCA
     double integration = 0.0; ///< motion, separation, terrain following, animation, bounds
     double total() const { return fields + avoidance + integration; }
 };

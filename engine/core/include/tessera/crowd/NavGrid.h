@@ -71,7 +71,10 @@ public:
     /// Whether world point `p` is on walkable ground of the grid.
     bool walkable(glm::vec2 p) const;
     /// Walking speed on cell `index` relative to flat ground: (0, 1], 0 when impassable.
-    float speedFactor(uint32_t index) const;
+    float speedFactor(uint32_t index) const {
+        const float cost = mTerrainCost[index];
+        return std::isfinite(cost) ? 1.0f / cost : 0.0f;
+    }
 
     /// Recomputes the cells whose slope can have changed after the terrain
     /// changed inside world rectangle [min, max] (a crater). Returns them.
