@@ -3,6 +3,7 @@
 #include "tessera/backend/CrowdChecks.h"
 #include "tessera/character/BakedAnimation.h"
 #include "tessera/character/BakedVertices.h"
+#include "tessera/core/ParallelFor.h"
 #include "tessera/gpu/Barriers.h"
 #include "tessera/tessellator/TrianglePatternLibrary.h"
 
@@ -270,34 +271,74 @@ bool GpuCrowd::uploadOccluders(uint32_t slot, std::span<const float> occluders) 
 
 uint32_t GpuCrowd::uploadInstances(uint32_t slot, std::span<const shader::CrowdInstance> instances) {
     // A counting sort by creature: the emulated techniques cull and rank
-    // each creature's instances as one contiguous range.
+    // each creature's instances as one contiguous range. By chunks over the
+    // cores (a million instances are 64 MB a frame): each chunk counts its
+    // valid instances per creature, a prefix over the chunks in order gives
+    // each its place, so the order is the serial one (stable).
     mLastSlot = slot;
     const uint32_t creatures = uint32_t(mCreatures.size());
+    constexpr uint32_t kChunk = 16384;
+    uint32_t count = uint32_t(instances.size());
+    uint32_t chunks = (count + kChunk - 1) / kChunk;
+    std::vector<uint32_t>& counts = mChunkCounts;
+    counts.assign(size_t(chunks) * creatures, 0u);
+    auto countChunk = [&](uint32_t begin, uint32_t end) {
+        uint32_t* mine = &counts[size_t(begin / kChunk) * creatures];
+        std::fill(mine, mine + creatures, 0u);
+        for (uint32_t i = begin; i < end; ++i)
+            if (backend::crowdInstanceValid(instances[i], mMaxIds, creatures, mClipCount)) ++mine[instances[i].ids.y];
+    };
+    core::parallelForRanges(count, kChunk, 0, [&](core::IndexRange range) { countChunk(range.begin, range.end); });
+    // Past the buffer's capacity the last valid instances are left out: the
+    // chunk that crosses it is cut where its valid ones fill it.
+    uint32_t kept = 0;
+    for (uint32_t k = 0; k < chunks; ++k) {
+        uint32_t inChunk = 0;
+        for (uint32_t c = 0; c < creatures; ++c) inChunk += counts[size_t(k) * creatures + c];
+        if (kept + inChunk > mMaxInstances) {
+            uint32_t end = k * kChunk;
+            for (uint32_t room = mMaxInstances - kept; room > 0; ++end)
+                room -= backend::crowdInstanceValid(instances[end], mMaxIds, creatures, mClipCount) ? 1u : 0u;
+            count = end;
+            chunks = k + 1;
+            countChunk(k * kChunk, end);
+            kept = mMaxInstances;
+            break;
+        }
+        kept += inChunk;
+    }
     std::vector<glm::uvec2>& ranges = mRanges[slot];
     ranges.assign(creatures, glm::uvec2(0));
-    std::vector<uint32_t> valid;
-    valid.reserve(std::min<size_t>(instances.size(), mMaxInstances));
-    for (uint32_t i = 0; i < instances.size() && valid.size() < mMaxInstances; ++i)
-        if (backend::crowdInstanceValid(instances[i], mMaxIds, creatures, mClipCount)) {
-            valid.push_back(i);
-            ++ranges[instances[i].ids.y].y;
-        }
+    for (uint32_t k = 0; k < chunks; ++k)
+        for (uint32_t c = 0; c < creatures; ++c) ranges[c].y += counts[size_t(k) * creatures + c];
     for (uint32_t c = 1; c < creatures; ++c) ranges[c].x = ranges[c - 1].x + ranges[c - 1].y;
+    // Each chunk's counts become its first place per creature.
     std::vector<uint32_t> next(creatures);
     for (uint32_t c = 0; c < creatures; ++c) next[c] = ranges[c].x;
+    for (uint32_t k = 0; k < chunks; ++k)
+        for (uint32_t c = 0; c < creatures; ++c) {
+            uint32_t& n = counts[size_t(k) * creatures + c];
+            const uint32_t first = next[c];
+            next[c] += n;
+            n = first;
+        }
     auto* out = static_cast<shader::CrowdInstance*>(mInstances[slot].mapped());
     std::vector<uint32_t>& host = mHostIndex[slot];
-    host.resize(valid.size());
-    for (uint32_t i : valid) {
-        const uint32_t at = next[instances[i].ids.y]++;
-        out[at] = instances[i];
-        host[at] = i;
-    }
+    host.resize(kept);
+    core::parallelForRanges(count, kChunk, 0, [&](core::IndexRange range) {
+        uint32_t* at = &counts[size_t(range.begin / kChunk) * creatures];
+        for (uint32_t i = range.begin; i < range.end; ++i) {
+            if (!backend::crowdInstanceValid(instances[i], mMaxIds, creatures, mClipCount)) continue;
+            const uint32_t place = at[instances[i].ids.y]++;
+            out[place] = instances[i];
+            host[place] = i;
+        }
+    });
     std::vector<uint32_t>& args = mInitialArgs[slot];
     for (uint32_t tier = 0; tier < TS_LOD_TIERS; ++tier)
         for (uint32_t c = 0; c < creatures; ++c)
             args[(tier * TS_CROWD_MAX_CHARACTERS + c) * TS_CROWD_ARG_DRAW_WORDS + 4] = listBase(slot, tier, c);
-    return uint32_t(valid.size());
+    return kept;
 }
 
 backend::CrowdTiers GpuCrowd::toHostIndices(backend::CrowdTiers tiers) const {

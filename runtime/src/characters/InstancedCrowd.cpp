@@ -18,6 +18,8 @@ Result<std::unique_ptr<InstancedCrowd>> InstancedCrowd::create(const CharacterAs
         parts.push_back(character::bakeAnimation(asset.asset));
     }
     crowd->mBaked = character::combine(parts);
+    // A million agents' lists cost milliseconds a frame; only --crowd-tiers reads them.
+    crowd->mLod.keepLists(false);
     return crowd;
 }
 

@@ -47,6 +47,7 @@ Status runFlythrough(const Options& options) {
     World& scene = run.world();
     RenderSession& session = run.session();
     InstancedCrowd* instanced = run.instancedCrowd();
+    if (instanced) instanced->keepLists(!options.crowdTiers.empty());
 
     if (!options.record.empty()) {
         std::error_code ec;

@@ -198,6 +198,7 @@ private:
     std::array<gpu::Buffer, gpu::kFramesInFlight> mArgsReadback;
     std::array<bool, gpu::kFramesInFlight> mArgsWritten{};
     std::array<std::vector<uint32_t>, gpu::kFramesInFlight> mInitialArgs;
+    std::vector<uint32_t> mChunkCounts; ///< uploadInstances' per chunk and creature counts, then first places
     bool mStateCleared = false;
     uint32_t mLastSlot = 0;
 };

@@ -23,6 +23,16 @@ bool continuesFadeFrom(uint32_t state, uint32_t tier) {
            shader::tsLodStateFade(state) >= 2u;
 }
 
+// Whether an instance in view (its candidate after the horizon: not none)
+// can count against a budgeted tier's limits: as a candidate, an incumbent
+// or a fading copy. The rest (impostors staying impostors, most of a large
+// crowd) never reach fitBudget, which then reads thousands, not millions.
+bool meetsTheBudgets(uint32_t candidate, uint32_t state) {
+    const uint32_t previous = shader::tsLodStatePrevious(state);
+    return candidate <= TS_LOD_FAR || shader::tsLodStateTier(state) <= TS_LOD_FAR ||
+           (previous <= TS_LOD_FAR && shader::tsLodStateFade(state) >= 2u);
+}
+
 } // namespace
 
 LodManager::LodManager(const LodPolicy& policy, uint32_t threads) : mPolicy(policy), mThreads(threads) {
@@ -89,7 +99,11 @@ const LodFrame& LodManager::update(std::span<const LodInstance> instances, std::
 void LodManager::classify(std::span<const LodInstance> instances) {
     mSeen.resize(instances.size());
     const shader::CrowdLodParams& p = mFrame.params;
-    core::parallelForRanges(uint32_t(instances.size()), kGrain, mThreads, [&](core::IndexRange range) {
+    const uint32_t count = uint32_t(instances.size());
+    mChunkBudgeted.resize((count + kGrain - 1) / kGrain);
+    core::parallelForRanges(count, kGrain, mThreads, [&](core::IndexRange range) {
+        std::vector<uint32_t>& budgeted = mChunkBudgeted[range.begin / kGrain];
+        budgeted.clear();
         for (uint32_t i = range.begin; i < range.end; ++i) {
             const LodInstance& instance = instances[i];
             Seen& seen = mSeen[i];
@@ -99,14 +113,20 @@ void LodManager::classify(std::span<const LodInstance> instances) {
                 seen.candidate = TS_LOD_NONE;
                 continue;
             }
+            const uint32_t state = mState[instance.id];
             seen.pixels = shader::tsLodPixels(instance.sphere, p);
-            seen.candidate = shader::tsLodCandidate(seen.pixels, shader::tsLodStateTier(mState[instance.id]), p);
+            seen.candidate = shader::tsLodCandidate(seen.pixels, shader::tsLodStateTier(state), p);
             if (shader::tsLodBehindTerrain(instance.sphere, p, mOccluders)) {
                 seen.hidden = seen.candidate;
                 seen.candidate = TS_LOD_NONE;
+            } else if (meetsTheBudgets(seen.candidate, state)) {
+                budgeted.push_back(i);
             }
         }
     });
+    // In instance order, as the chunks are.
+    mBudgeted.clear();
+    for (const std::vector<uint32_t>& chunk : mChunkBudgeted) mBudgeted.insert(mBudgeted.end(), chunk.begin(), chunk.end());
 }
 
 void LodManager::fitBudget(std::span<const LodInstance> instances, std::span<const LodCharacter> characters) {
@@ -120,9 +140,8 @@ void LodManager::fitBudget(std::span<const LodInstance> instances, std::span<con
     auto gather = [&](uint32_t tier, float cap, uint64_t& forcedCost, uint64_t& forcedCount) {
         items.clear();
         forcedCost = forcedCount = 0;
-        for (uint32_t i = 0; i < instances.size(); ++i) {
+        for (const uint32_t i : mBudgeted) {
             const Seen& seen = mSeen[i];
-            if (seen.candidate == TS_LOD_NONE) continue;
             const uint32_t state = mState[instances[i].id];
             const LodCharacter& character = characters[instances[i].character];
             const uint64_t cost = tier == TS_LOD_NEAR ? nearTriangles(seen.pixels, character, cap) : 1u;
@@ -156,7 +175,7 @@ void LodManager::fitBudget(std::span<const LodInstance> instances, std::span<con
         return n;
     };
     auto resetTiers = [&] {
-        for (Seen& seen : mSeen) seen.tier = TS_LOD_NONE;
+        for (const uint32_t i : mBudgeted) mSeen[i].tier = TS_LOD_NONE;
     };
 
     const detail::AdmissionLimits nearLimits{budget.maxTessellatedTriangles, budget.maxNearInstances};
@@ -232,10 +251,16 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
             const LodInstance& instance = instances[i];
             const Seen& seen = mSeen[i];
             const uint32_t old = mState[instance.id];
-            const uint32_t next = shader::tsLodUpdate(old, instance.sphere, p, mOccluders);
-            mState[instance.id] = next;
             if (seen.hidden != TS_LOD_NONE) ++chunk.hidden[seen.hidden];
-            if (seen.candidate == TS_LOD_NONE) continue;
+            if (seen.candidate == TS_LOD_NONE) {
+                mState[instance.id] = shader::tsLodStateNone();
+                continue;
+            }
+            // tsLodUpdate's step for an instance in view, on classify's size
+            // and candidate (the same numbers: no second frustum, horizon or
+            // size test).
+            const uint32_t next = shader::tsLodNext(old, seen.pixels, seen.candidate, p);
+            mState[instance.id] = next;
             ++chunk.inView;
             const uint32_t tier = shader::tsLodStateTier(next);
             if (tier != seen.candidate) ++chunk.demoted;
@@ -247,7 +272,7 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
             const float coverage = shader::tsLodCoverage(next, p);
             auto draw = [&](uint32_t t, float share, bool fadingOut) {
                 const bool near = t == TS_LOD_NEAR;
-                chunk.tiers[t].push_back({i, near ? level : 1.0f, share, fadingOut});
+                if (mLists) chunk.tiers[t].push_back({i, near ? level : 1.0f, share, fadingOut});
                 LodTierCount& c = chunk.counts[t];
                 ++c.instances;
                 if (share < 1.0f) ++c.fading;

@@ -55,9 +55,14 @@ public:
     backend::CrowdDrawInfo drawInfo(bool displacement, bool lodColors) const;
 
     const lod::LodFrame& lod() const { return mLod.frame(); }
+    /// Whether select() fills the CPU reference's per-tier lists
+    /// (LodFrame::tiers; default: no, the counts and cuts come without
+    /// them). writeTiers needs them from the frame it writes.
+    void keepLists(bool keep) { mLod.keepLists(keep); }
     /// Writes `gpu` (a backend's lists, instance indices) and the CPU
     /// reference's last lists as agent ids per tier, sorted, to `path`
-    /// (--crowd-tiers); an error naming the file when it cannot.
+    /// (--crowd-tiers; keepLists must have been on); an error naming the
+    /// file when it cannot.
     Status writeTiers(const std::string& path, const std::string& backend, const backend::CrowdTiers& gpu) const;
     size_t instanceCount() const { return mInstances.size(); }
     /// This frame's instances standing in `region` (x, y: min corner XZ, z:

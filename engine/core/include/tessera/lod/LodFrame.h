@@ -38,7 +38,8 @@ struct LodTierCount {
 struct LodFrame {
     /// What the GPU selection reads (the budget's cuts and level cap included).
     shader::CrowdLodParams params{};
-    /// The CPU reference's draws per tier, in instance order.
+    /// The CPU reference's draws per tier, in instance order (left empty
+    /// where the manager keeps no lists: LodManager::keepLists).
     std::array<std::vector<LodDraw>, kTierCount> tiers;
     std::array<LodTierCount, kTierCount> counts{};
     uint32_t inView = 0;        ///< instances whose sphere meets the frustum, not behind the terrain

@@ -36,6 +36,11 @@ public:
     /// cross-fades. Instance `character` fields index `characters`.
     const LodFrame& update(std::span<const LodInstance> instances, std::span<const LodCharacter> characters,
                            const LodView& view);
+    /// Whether updates fill LodFrame::tiers, the per-tier lists (default:
+    /// yes). The counts and parameters come either way; a renderer that
+    /// only needs those skips a million-entry list for a million agents.
+    void keepLists(bool keep) { mLists = keep; }
+    bool keepsLists() const { return mLists; }
     /// The last update's answer.
     const LodFrame& frame() const { return mFrame; }
 
@@ -64,6 +69,11 @@ private:
     const float* mOccluders = nullptr; ///< the current update's horizon grid (LodView::occluders), or none
     std::vector<uint32_t> mState;
     std::vector<Seen> mSeen;
+    /// The instances in view that can count against a budgeted tier
+    /// (classify fills it; fitBudget reads only these), and its per-chunk parts.
+    std::vector<uint32_t> mBudgeted;
+    std::vector<std::vector<uint32_t>> mChunkBudgeted;
+    bool mLists = true;
     /// Triangles of one cage triangle at each odd segment count 1..63 (the
     /// fractional-odd pattern's triangle count depends only on it).
     std::array<uint32_t, 64> mTrianglesPerCageTriangle{};

@@ -176,15 +176,14 @@ TS_INLINE uint tsLodTier(float pixels, uint candidate, uint last, CrowdLodParams
     return TS_LOD_IMPOSTOR;
 }
 
-/// The next state of an instance (`state`: last frame's). Out of view: none.
-/// Coming into view: its tier at once (nothing on screen to fade from). A
-/// change of tier starts a fade; a demotion by the budget fades only when the
-/// budget leaves room for the fading copies (cuts.w, per tier left).
-TS_INLINE uint tsLodUpdate(uint state, vec4 sphere, CrowdLodParams p TS_LOD_OCCLUDERS_PARAM) {
-    if (!tsLodInFrustum(sphere, p) || tsLodBehindTerrain(sphere, p TS_LOD_OCCLUDERS_ARG)) return tsLodStateNone();
+/// The next state of an instance in view (`state`: last frame's) of
+/// `pixels` on screen whose thresholds gave `candidate` (tsLodCandidate
+/// against last frame's tier). Coming into view: its tier at once (nothing
+/// on screen to fade from). A change of tier starts a fade; a demotion by
+/// the budget fades only when the budget leaves room for the fading copies
+/// (cuts.w, per tier left).
+TS_INLINE uint tsLodNext(uint state, float pixels, uint candidate, CrowdLodParams p) {
     const uint last = tsLodStateTier(state);
-    const float pixels = tsLodPixels(sphere, p);
-    const uint candidate = tsLodCandidate(pixels, last, p);
     const uint tier = tsLodTier(pixels, candidate, last, p);
     if (last == TS_LOD_NONE) return tsLodState(tier, tier, 0u);
     const uint fadeFrames = uint(p.thresholds.w);
@@ -196,6 +195,14 @@ TS_INLINE uint tsLodUpdate(uint state, vec4 sphere, CrowdLodParams p TS_LOD_OCCL
     }
     const uint fade = tsLodStateFade(state);
     return tsLodState(tier, tsLodStatePrevious(state), fade > 0u ? fade - 1u : 0u);
+}
+
+/// The next state of an instance (`state`: last frame's). Out of view
+/// (outside the frustum or behind the terrain): none.
+TS_INLINE uint tsLodUpdate(uint state, vec4 sphere, CrowdLodParams p TS_LOD_OCCLUDERS_PARAM) {
+    if (!tsLodInFrustum(sphere, p) || tsLodBehindTerrain(sphere, p TS_LOD_OCCLUDERS_ARG)) return tsLodStateNone();
+    const float pixels = tsLodPixels(sphere, p);
+    return tsLodNext(state, pixels, tsLodCandidate(pixels, tsLodStateTier(state), p), p);
 }
 
 /// How much of the instance its tier draws, in (0, 1]: the fade's progress
