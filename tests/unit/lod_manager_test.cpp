@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <set>
 
 using namespace tessera;
@@ -377,6 +378,55 @@ TEST(LodManager, SameAnswerOnAnyThreadCount) {
         ASSERT_EQ(a.tiers[t].size(), b.tiers[t].size());
         for (size_t k = 0; k < a.tiers[t].size(); ++k) EXPECT_EQ(a.tiers[t][k].instance, b.tiers[t][k].instance);
     }
+}
+
+TEST(LodManager, WithoutListsEveryCountCutAndStateIsTheSame) {
+    // The runtime runs the manager without its per-tier lists; a camera
+    // flying over a crowd behind a ridge (fades, budget demotions, impostors,
+    // horizon culling) gives the same parameters, counts and state words.
+    LodPolicy policy = LodPolicy::forDevice(lod::DeviceClass::Cpu);
+    policy.budget.maxFarInstances = 100;
+    LodManager with(policy, 2), without(policy, 2);
+    without.keepLists(false);
+    const auto characters = creature();
+    Random random(17);
+    std::vector<LodInstance> instances;
+    for (uint32_t i = 0; i < 6000; ++i)
+        instances.push_back({glm::vec4(random.range(-60.0f, 60.0f), 0.0f, random.range(-60.0f, 60.0f), kRadius),
+                             (i * 37) % 6000, 0});
+    // 16 x 16 cells of 8 m from (-64, -64): a ridge 3 m high along z = 0.
+    std::vector<float> lowest(16 * 16, -1.0f);
+    for (uint32_t x = 0; x < 16; ++x) lowest[8 * 16 + x] = 3.0f;
+    uint32_t hidden = 0, impostors = 0;
+    for (int frame = 0; frame < 120; ++frame) {
+        scene::Camera c;
+        const float progress = float(frame) / 120.0f;
+        c.setPosition({-50.0f + 100.0f * progress, 1.7f, 30.0f - 40.0f * progress});
+        c.setYaw(-1.2f + 2.4f * progress);
+        lod::LodView v = view(c);
+        v.occluders = lowest;
+        v.occluderGrid = glm::vec4(-64.0f, -64.0f, 8.0f, 16.0f);
+        const lod::LodFrame& a = with.update(instances, characters, v);
+        const lod::LodFrame& b = without.update(instances, characters, v);
+        ASSERT_EQ(std::memcmp(&a.params, &b.params, sizeof a.params), 0) << "frame " << frame;
+        for (uint32_t t = 0; t < lod::kTierCount; ++t) {
+            EXPECT_EQ(a.counts[t].instances, b.counts[t].instances);
+            EXPECT_EQ(a.counts[t].fading, b.counts[t].fading);
+            EXPECT_EQ(a.counts[t].triangles, b.counts[t].triangles);
+            EXPECT_EQ(a.hidden[t], b.hidden[t]);
+            EXPECT_EQ(a.tiers[t].size(), a.counts[t].instances);
+            EXPECT_TRUE(b.tiers[t].empty());
+            hidden += a.hidden[t];
+        }
+        EXPECT_EQ(a.inView, b.inView);
+        EXPECT_EQ(a.pastFarBudget, b.pastFarBudget);
+        EXPECT_EQ(a.budgetDemoted, b.budgetDemoted);
+        EXPECT_EQ(a.tierChanges, b.tierChanges);
+        impostors += a.counts[TS_LOD_IMPOSTOR].instances;
+        for (const LodInstance& instance : instances) ASSERT_EQ(with.state(instance.id), without.state(instance.id));
+    }
+    EXPECT_GT(hidden, 0u) << "the ridge hides part of the crowd";
+    EXPECT_GT(impostors, 0u);
 }
 
 TEST(LodPolicy, BadSettingsAreRefusedWithAMessage) {
