@@ -1,6 +1,7 @@
 // Horizon occlusion (tsLodBehindTerrain, CrowdLod.h): an instance is hidden
 // only where every sight line to its sphere passes below some cell's lowest
 // drawn height first, so culling it never removes a visible pixel.
+#include "tessera/lod/HorizonPyramid.h"
 #include "tessera/lod/LodManager.h"
 #include "tessera/shaders/CrowdLod.h"
 
@@ -104,6 +105,47 @@ TEST(LodHorizon, HidesOnlyWhatEverySightLineLosesBehindTheTerrain) {
     }
     std::cout << "[lod horizon] " << hiddenCount << " of 300 random spheres hidden\n";
     EXPECT_GT(hiddenCount, 20u);
+}
+
+// The LOD manager's pyramid skips runs of points that cannot be blocked: it
+// must give the shared rule's answer for every sphere, on grids of any side
+// (odd ones too), with eyes high and low, near and far.
+TEST(LodHorizon, ThePyramidGivesTheSharedRulesAnswer) {
+    std::mt19937 random(23);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    uint32_t hiddenCount = 0, visibleCount = 0;
+    for (const uint32_t n : {1u, 2u, 7u, 16u, 37u, 128u}) {
+        for (int grid = 0; grid < 12; ++grid) {
+            const float cell = 2.0f + 30.0f * unit(random);
+            const float side = cell * float(n);
+            std::vector<float> lowest(size_t(n) * n);
+            // Smooth hills with sharp ridges now and then, some cells far below.
+            for (uint32_t j = 0; j < n; ++j)
+                for (uint32_t i = 0; i < n; ++i)
+                    lowest[size_t(j) * n + i] = 20.0f * std::sin(0.3f * float(i) + float(grid)) * std::cos(0.2f * float(j)) +
+                                                (unit(random) < 0.05f ? 40.0f * unit(random) : 0.0f) -
+                                                (unit(random) < 0.02f ? 100.0f : 0.0f);
+            lod::HorizonPyramid pyramid;
+            pyramid.build(lowest.data(), n);
+            shader::CrowdLodParams p{};
+            p.occluder = glm::vec4(-0.1f * side, -0.2f * side, cell, float(n));
+            for (int view = 0; view < 8; ++view) {
+                p.eye = glm::vec4(side * (1.4f * unit(random) - 0.3f), 60.0f * unit(random) - 10.0f,
+                                  side * (1.4f * unit(random) - 0.3f), 800.0f);
+                for (int k = 0; k < 400; ++k) {
+                    const glm::vec4 sphere(side * (1.4f * unit(random) - 0.3f), 50.0f * unit(random) - 25.0f,
+                                           side * (1.4f * unit(random) - 0.3f), 0.2f + 3.0f * unit(random));
+                    const bool expected = shader::tsLodBehindTerrain(sphere, p, lowest.data());
+                    ASSERT_EQ(pyramid.behindTerrain(sphere, p), expected)
+                        << "n " << n << " grid " << grid << " view " << view << " sphere " << k;
+                    (expected ? hiddenCount : visibleCount)++;
+                }
+            }
+        }
+    }
+    std::cout << "[lod horizon] pyramid: " << hiddenCount << " hidden, " << visibleCount << " not\n";
+    EXPECT_GT(hiddenCount, 2000u);
+    EXPECT_GT(visibleCount, 2000u);
 }
 
 TEST(LodHorizon, TheManagerLeavesHiddenInstancesOutOfEveryTier) {

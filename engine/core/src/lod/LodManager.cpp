@@ -80,7 +80,7 @@ const LodFrame& LodManager::update(std::span<const LodInstance> instances, std::
     const bool occlusion = view.occluderGrid.w >= 1.0f && view.occluderGrid.z > 0.0f &&
                            view.occluders.size() >= size_t(view.occluderGrid.w) * size_t(view.occluderGrid.w);
     p.occluder = occlusion ? view.occluderGrid : glm::vec4(0.0f);
-    mOccluders = occlusion ? view.occluders.data() : nullptr;
+    mHorizon.build(occlusion ? view.occluders.data() : nullptr, occlusion ? uint32_t(view.occluderGrid.w) : 0u);
     p.thresholds = {mPolicy.nearPixels, mPolicy.farPixels, mPolicy.hysteresis, float(mPolicy.fadeFrames)};
     p.cuts = {0.0f, 0.0f, 0.0f, 0.0f}; // fitBudget sets them
     p.levels = {std::max(1.0f, view.maxLevel), mPolicy.fixedLevel, mPolicy.impostorPixels,
@@ -116,7 +116,7 @@ void LodManager::classify(std::span<const LodInstance> instances) {
             const uint32_t state = mState[instance.id];
             seen.pixels = shader::tsLodPixels(instance.sphere, p);
             seen.candidate = shader::tsLodCandidate(seen.pixels, shader::tsLodStateTier(state), p);
-            if (shader::tsLodBehindTerrain(instance.sphere, p, mOccluders)) {
+            if (mHorizon.behindTerrain(instance.sphere, p)) {
                 seen.hidden = seen.candidate;
                 seen.candidate = TS_LOD_NONE;
             } else if (meetsTheBudgets(seen.candidate, state)) {

@@ -12,6 +12,7 @@
 /// It keeps every instance's state word by id, as each backend keeps its
 /// own copy on the GPU, so both evolve alike.
 
+#include "tessera/lod/HorizonPyramid.h"
 #include "tessera/lod/LodFrame.h"
 #include "tessera/lod/LodInstance.h"
 #include "tessera/lod/LodPolicy.h"
@@ -66,7 +67,9 @@ private:
 
     LodPolicy mPolicy;
     uint32_t mThreads = 0;
-    const float* mOccluders = nullptr; ///< the current update's horizon grid (LodView::occluders), or none
+    /// The current update's horizon grid (LodView::occluders) and its max
+    /// pyramid: tsLodBehindTerrain's answer, faster.
+    HorizonPyramid mHorizon;
     std::vector<uint32_t> mState;
     std::vector<Seen> mSeen;
     /// The instances in view that can count against a budgeted tier

@@ -106,34 +106,62 @@ TS_INLINE bool tsLodInFrustum(vec4 sphere, CrowdLodParams p) {
 /// before the sphere. The cross-section is taken by its square and the
 /// lowest of the cells the square overlaps. Points every half cell (at most
 /// TS_LOD_OCCLUSION_STEPS), from the eye.
-TS_INLINE bool tsLodBehindTerrain(vec4 sphere, CrowdLodParams p TS_LOD_OCCLUDERS_PARAM) {
-    const uint n = uint(p.occluder.w);
-    if (n == 0u || !TS_LOD_HAS_OCCLUDERS) return false;
+///
+/// tsLodSight sets the test up for one sphere: `delta` the eye-to-centre
+/// vector (xyz) and its length (w), `cone` the spread and the fraction of
+/// the way the points reach; returns how many points (0: too close to test).
+TS_INLINE uint tsLodSight(vec4 sphere, CrowdLodParams p, TS_OUT(vec4) delta, TS_OUT(vec2) cone) {
     const float cell = p.occluder.z;
     const float dx = sphere.x - p.eye.x, dy = sphere.y - p.eye.y, dz = sphere.z - p.eye.z;
     const float d = sqrt(dx * dx + dy * dy + dz * dz);
     const float r = sphere.w;
-    if (d <= 2.0f * r + cell) return false;
+    delta = vec4(dx, dy, dz, d);
+    cone = vec2(0.0f, 0.0f);
+    if (d <= 2.0f * r + cell) return 0u;
     const float spread = r / sqrt(d * d - r * r);
     const float reach = (d - r) / d; // the sight lines meet the sphere beyond it
+    cone = vec2(spread, reach);
     const float across = sqrt(dx * dx + dz * dz);
-    const uint steps = min(uint(across / (0.5f * cell)) + 1u, TS_LOD_OCCLUSION_STEPS);
-    for (uint s = 1u; s <= steps; ++s) {
-        const float t = reach * float(s) / float(steps + 1u);
-        const float x = p.eye.x + t * dx - p.occluder.x, z = p.eye.z + t * dz - p.occluder.y;
-        const float y = p.eye.y + t * dy;
-        const float rho = t * d * spread;
-        // The cells the cross-section's square overlaps (at most two a side
-        // while it is narrower than a cell), all inside the grid.
-        if (2.0f * rho >= cell) continue;
-        const float i0 = floor((x - rho) / cell), i1 = floor((x + rho) / cell);
-        const float j0 = floor((z - rho) / cell), j1 = floor((z + rho) / cell);
-        if (i0 < 0.0f || j0 < 0.0f || i1 >= float(n) || j1 >= float(n)) continue;
-        const uint a = uint(i0), b = uint(i1), c = uint(j0), e = uint(j1);
-        const float lowest = min(min(TS_LOD_OCCLUDER_MIN(a, c, n), TS_LOD_OCCLUDER_MIN(b, c, n)),
-                                 min(TS_LOD_OCCLUDER_MIN(a, e, n), TS_LOD_OCCLUDER_MIN(b, e, n)));
-        if (y + rho + TS_LOD_OCCLUSION_MARGIN < lowest) return true;
-    }
+    return min(uint(across / (0.5f * cell)) + 1u, TS_LOD_OCCLUSION_STEPS);
+}
+
+/// Point `s` (1..steps) of the sight set up by tsLodSight: a fraction t of
+/// the way, where the cone's cross-section is a square of half side rho.
+TS_INLINE vec4 tsLodSightPoint(uint s, uint steps, vec4 delta, vec2 cone, CrowdLodParams p) {
+    const float t = cone.y * float(s) / float(steps + 1u);
+    const float x = p.eye.x + t * delta.x - p.occluder.x, z = p.eye.z + t * delta.z - p.occluder.y;
+    const float y = p.eye.y + t * delta.y;
+    return vec4(x, y, z, t * delta.w * cone.x);
+}
+
+/// Whether every sight line passes below the lowest height of the cells
+/// the cross-section at point `s` overlaps (at most two a side while it is
+/// narrower than a cell, all inside the grid).
+TS_INLINE bool tsLodSightBlockedAt(uint s, uint steps, vec4 delta, vec2 cone, CrowdLodParams p TS_LOD_OCCLUDERS_PARAM) {
+    const uint n = uint(p.occluder.w);
+    const float cell = p.occluder.z;
+    const vec4 q = tsLodSightPoint(s, steps, delta, cone, p);
+    const float rho = q.w;
+    if (2.0f * rho >= cell) return false;
+    const float i0 = floor((q.x - rho) / cell), i1 = floor((q.x + rho) / cell);
+    const float j0 = floor((q.z - rho) / cell), j1 = floor((q.z + rho) / cell);
+    if (i0 < 0.0f || j0 < 0.0f || i1 >= float(n) || j1 >= float(n)) return false;
+    const uint a = uint(i0), b = uint(i1), c = uint(j0), e = uint(j1);
+    const float lowest = min(min(TS_LOD_OCCLUDER_MIN(a, c, n), TS_LOD_OCCLUDER_MIN(b, c, n)),
+                             min(TS_LOD_OCCLUDER_MIN(a, e, n), TS_LOD_OCCLUDER_MIN(b, e, n)));
+    return q.y + rho + TS_LOD_OCCLUSION_MARGIN < lowest;
+}
+
+/// The whole test (above): true when some point's cross-section is blocked.
+/// lod::LodManager runs the same points through a pyramid that skips runs of
+/// them none of which can be blocked (HorizonPyramid), with the same answer.
+TS_INLINE bool tsLodBehindTerrain(vec4 sphere, CrowdLodParams p TS_LOD_OCCLUDERS_PARAM) {
+    if (uint(p.occluder.w) == 0u || !TS_LOD_HAS_OCCLUDERS) return false;
+    vec4 delta;
+    vec2 cone;
+    const uint steps = tsLodSight(sphere, p, delta, cone);
+    for (uint s = 1u; s <= steps; ++s)
+        if (tsLodSightBlockedAt(s, steps, delta, cone, p TS_LOD_OCCLUDERS_ARG)) return true;
     return false;
 }
 
