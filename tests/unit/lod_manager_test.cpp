@@ -429,6 +429,51 @@ TEST(LodManager, WithoutListsEveryCountCutAndStateIsTheSame) {
     EXPECT_GT(impostors, 0u);
 }
 
+TEST(LodManager, InstancesInAnyOrderKeepTheirStatesById) {
+    // The manager keeps states in instance order while the ids stay in place
+    // and moves them by id when they do: a crowd re-sorted now and then, with
+    // agents leaving and coming back, gets the states and counts of the same
+    // crowd given in one fixed order.
+    const auto characters = creature();
+    Random random(29);
+    std::vector<LodInstance> fixed;
+    for (uint32_t i = 0; i < 3000; ++i)
+        fixed.push_back({glm::vec4(random.range(-40.0f, 40.0f), 0.0f, random.range(-80.0f, 0.0f), kRadius), i * 3 + 1,
+                         0});
+    LodPolicy policy = testPolicy();
+    policy.budget.maxFarInstances = 200;
+    LodManager inOrder(policy, 2), shuffled(policy, 2);
+    std::vector<uint32_t> order(fixed.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    // The shared per-instance rule by id, as a backend's state buffer runs it.
+    std::vector<uint32_t> rule(fixed.size() * 3 + 1, shader::tsLodStateNone());
+    for (int frame = 0; frame < 90; ++frame) {
+        for (LodInstance& instance : fixed) instance.sphere.z += 0.4f * std::sin(0.1f * float(frame + instance.id));
+        // Every 16 frames a new order; between frames 30 and 40 a tenth of the
+        // crowd is away (both managers see the same set).
+        if (frame % 16 == 0)
+            for (uint32_t i = uint32_t(order.size()) - 1; i > 0; --i) std::swap(order[i], order[random.below(i + 1)]);
+        const bool away = frame >= 30 && frame < 40;
+        std::vector<LodInstance> present, permuted;
+        for (const LodInstance& instance : fixed)
+            if (!away || instance.id % 10 != 0) present.push_back(instance);
+        for (uint32_t k : order)
+            if (!away || fixed[k].id % 10 != 0) permuted.push_back(fixed[k]);
+        const scene::Camera c = camera();
+        const lod::LodFrame& a = inOrder.update(present, characters, view(c));
+        const lod::LodFrame& b = shuffled.update(permuted, characters, view(c));
+        ASSERT_EQ(std::memcmp(&a.params, &b.params, sizeof a.params), 0) << "frame " << frame;
+        for (uint32_t t = 0; t < lod::kTierCount; ++t) EXPECT_EQ(a.counts[t].instances, b.counts[t].instances);
+        EXPECT_EQ(a.tierChanges, b.tierChanges);
+        for (const LodInstance& instance : permuted)
+            rule[instance.id] = shader::tsLodUpdate(rule[instance.id], instance.sphere, b.params, nullptr);
+        for (const LodInstance& instance : fixed) {
+            ASSERT_EQ(inOrder.state(instance.id), shuffled.state(instance.id)) << "frame " << frame << " id " << instance.id;
+            ASSERT_EQ(shuffled.state(instance.id), rule[instance.id]) << "frame " << frame << " id " << instance.id;
+        }
+    }
+}
+
 TEST(LodPolicy, BadSettingsAreRefusedWithAMessage) {
     LodPolicy policy = testPolicy();
     EXPECT_TRUE(policy.validate().ok());

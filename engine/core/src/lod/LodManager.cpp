@@ -5,6 +5,7 @@
 #include "tessera/tessellator/Tessellator.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 #include <cmath>
 
@@ -54,7 +55,52 @@ void LodManager::setPolicy(const LodPolicy& policy) {
 }
 
 uint32_t LodManager::state(uint32_t id) const {
+    if (id < mSlotOf.size()) {
+        const uint32_t slot = mSlotOf[id];
+        if (slot < mSlotId.size() && mSlotId[slot] == id) return mSlotState[slot];
+    }
     return id < mState.size() ? mState[id] : shader::tsLodStateNone();
+}
+
+void LodManager::reset() {
+    mState.clear();
+    mSlotState.clear();
+    mSlotId.clear();
+    mSlotOf.clear();
+}
+
+void LodManager::bindSlots(std::span<const LodInstance> instances) {
+    const uint32_t count = uint32_t(instances.size());
+    // Most frames the instances come with the same ids in the same places (a
+    // crowd re-sorts its agents in memory now and then): the states stay in
+    // instance order, read and written in sequence. A state by id, read at
+    // random, was most of the frame's classification at a million agents.
+    std::atomic<bool> moved = mSlotId.size() != count;
+    if (!moved)
+        core::parallelForRanges(count, kGrain, mThreads, [&](core::IndexRange range) {
+            for (uint32_t i = range.begin; i < range.end && !moved.load(std::memory_order_relaxed); ++i)
+                if (instances[i].id != mSlotId[i]) moved = true;
+        });
+    if (!moved) return;
+    // Park last frame's states by id (ids absent now keep theirs, as each
+    // backend's state buffer does), then fetch this frame's in its order.
+    uint32_t maxId = 0;
+    for (const LodInstance& instance : instances) maxId = std::max(maxId, instance.id);
+    if (!instances.empty() && mState.size() <= maxId) mState.resize(size_t(maxId) + 1, shader::tsLodStateNone());
+    core::parallelForRanges(uint32_t(mSlotId.size()), kGrain, mThreads, [&](core::IndexRange range) {
+        for (uint32_t slot = range.begin; slot < range.end; ++slot) mState[mSlotId[slot]] = mSlotState[slot];
+    });
+    mSlotState.resize(count);
+    mSlotId.resize(count);
+    if (mSlotOf.size() < mState.size()) mSlotOf.resize(mState.size(), UINT32_MAX);
+    core::parallelForRanges(count, kGrain, mThreads, [&](core::IndexRange range) {
+        for (uint32_t i = range.begin; i < range.end; ++i) {
+            const uint32_t id = instances[i].id;
+            mSlotId[i] = id;
+            mSlotState[i] = mState[id];
+            mSlotOf[id] = i;
+        }
+    });
 }
 
 uint64_t LodManager::nearTriangles(float pixels, const LodCharacter& character, float cap) const {
@@ -86,10 +132,7 @@ const LodFrame& LodManager::update(std::span<const LodInstance> instances, std::
     p.levels = {std::max(1.0f, view.maxLevel), mPolicy.fixedLevel, mPolicy.impostorPixels,
                 1.0f / (1.0f - mPolicy.hysteresis)};
 
-    uint32_t maxId = 0;
-    for (const LodInstance& instance : instances) maxId = std::max(maxId, instance.id);
-    if (!instances.empty() && mState.size() <= maxId) mState.resize(size_t(maxId) + 1, shader::tsLodStateNone());
-
+    bindSlots(instances);
     classify(instances);
     fitBudget(instances, characters);
     advance(instances, characters);
@@ -113,7 +156,7 @@ void LodManager::classify(std::span<const LodInstance> instances) {
                 seen.candidate = TS_LOD_NONE;
                 continue;
             }
-            const uint32_t state = mState[instance.id];
+            const uint32_t state = mSlotState[i];
             seen.pixels = shader::tsLodPixels(instance.sphere, p);
             seen.candidate = shader::tsLodCandidate(seen.pixels, shader::tsLodStateTier(state), p);
             if (mHorizon.behindTerrain(instance.sphere, p)) {
@@ -142,7 +185,7 @@ void LodManager::fitBudget(std::span<const LodInstance> instances, std::span<con
         forcedCost = forcedCount = 0;
         for (const uint32_t i : mBudgeted) {
             const Seen& seen = mSeen[i];
-            const uint32_t state = mState[instances[i].id];
+            const uint32_t state = mSlotState[i];
             const LodCharacter& character = characters[instances[i].character];
             const uint64_t cost = tier == TS_LOD_NEAR ? nearTriangles(seen.pixels, character, cap) : 1u;
             const bool wasHere = shader::tsLodStateTier(state) == tier;
@@ -250,17 +293,17 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
         for (uint32_t i = range.begin; i < range.end; ++i) {
             const LodInstance& instance = instances[i];
             const Seen& seen = mSeen[i];
-            const uint32_t old = mState[instance.id];
+            const uint32_t old = mSlotState[i];
             if (seen.hidden != TS_LOD_NONE) ++chunk.hidden[seen.hidden];
             if (seen.candidate == TS_LOD_NONE) {
-                mState[instance.id] = shader::tsLodStateNone();
+                mSlotState[i] = shader::tsLodStateNone();
                 continue;
             }
             // tsLodUpdate's step for an instance in view, on classify's size
             // and candidate (the same numbers: no second frustum, horizon or
             // size test).
             const uint32_t next = shader::tsLodNext(old, seen.pixels, seen.candidate, p);
-            mState[instance.id] = next;
+            mSlotState[i] = next;
             ++chunk.inView;
             const uint32_t tier = shader::tsLodStateTier(next);
             if (tier != seen.candidate) ++chunk.demoted;

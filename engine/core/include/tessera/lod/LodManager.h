@@ -49,7 +49,7 @@ public:
     uint32_t state(uint32_t id) const;
     /// Forgets every instance (as after a teleport of the camera: nothing
     /// fades in).
-    void reset() { mState.clear(); }
+    void reset();
 
 private:
     /// Per instance, from the first pass over the frame.
@@ -60,6 +60,9 @@ private:
         uint32_t hidden = TS_LOD_NONE;    ///< behind the terrain: the candidate it would have been
     };
 
+    /// Puts each instance's state at its index (mSlotState), moving them
+    /// only when the ids moved since the last update.
+    void bindSlots(std::span<const LodInstance> instances);
     void classify(std::span<const LodInstance> instances);
     void fitBudget(std::span<const LodInstance> instances, std::span<const LodCharacter> characters);
     void advance(std::span<const LodInstance> instances, std::span<const LodCharacter> characters);
@@ -70,7 +73,11 @@ private:
     /// The current update's horizon grid (LodView::occluders) and its max
     /// pyramid: tsLodBehindTerrain's answer, faster.
     HorizonPyramid mHorizon;
-    std::vector<uint32_t> mState;
+    /// States by id as of the last time the instances' ids moved (the
+    /// ids absent since keep theirs there); the live ones are by slot: the
+    /// last update's instance i had id mSlotId[i] and state mSlotState[i];
+    /// mSlotOf[id] is the slot an id was given when it last moved.
+    std::vector<uint32_t> mState, mSlotState, mSlotId, mSlotOf;
     std::vector<Seen> mSeen;
     /// The instances in view that can count against a budgeted tier
     /// (classify fills it; fitBudget reads only these), and its per-chunk parts.
