@@ -26,9 +26,10 @@ inline glm::u8vec3 syntheticImpostorColor(uint32_t creature, uint32_t clip, uint
 }
 
 /// An atlas of `clips` clips (TS_IMPOSTOR_PHASES layers each) for creature
-/// `creature`, framing the sphere (0, centreY, 0), `radius`.
-inline character::ImpostorAtlas syntheticImpostorAtlas(uint32_t creature, uint32_t clips, float centreY,
-                                                       float radius) {
+/// `creature`, framing the sphere (0, centreY, 0), `radius`. Also what tests
+/// of the file format and the crowd checks use where any valid atlas will do.
+inline character::ImpostorAtlas syntheticImpostorAtlas(uint32_t creature, uint32_t clips, float centreY = 0.75f,
+                                                       float radius = 1.25f) {
     character::ImpostorAtlas atlas;
     atlas.size = TS_IMPOSTOR_VIEWS * TS_IMPOSTOR_CELL;
     atlas.layers = clips * TS_IMPOSTOR_PHASES;

@@ -7,7 +7,7 @@
 #include "tessera/character/BakedAnimation.h"
 #include "tessera/character/CageMesh.h"
 
-#include "ImpostorTestAtlas.h"
+#include "SyntheticImpostorAtlas.h"
 
 #include <gtest/gtest.h>
 
@@ -30,7 +30,7 @@ character::CageMesh triangle() {
 struct Fixture {
     character::CageMesh cage = triangle(), far = triangle();
     character::BakedAnimation baked;
-    character::ImpostorAtlas impostor = test::makeTestAtlas();
+    character::ImpostorAtlas impostor = test::syntheticImpostorAtlas(0, 1);
     std::vector<uint32_t> middle, farCasters;
     backend::CrowdCharacterDesc character;
     backend::CrowdDesc desc;
@@ -94,7 +94,7 @@ TEST(CrowdChecks, RefusesACreatureWithoutACompleteImpostorAtlas) {
     f.character.impostor = &f.impostor;
     f.impostor.albedo[2].pop_back();
     expectRefused(f, "character 0: its impostor atlas's mip 2 holds");
-    f.impostor = test::makeTestAtlas();
+    f.impostor = test::syntheticImpostorAtlas(0, 1);
     f.impostor.radius = 0.0f;
     expectRefused(f, "character 0: its impostor atlas's sphere");
 }
@@ -107,7 +107,7 @@ TEST(CrowdChecks, RefusesAnImpostorAtlasWithoutALayerPerPhaseOfEveryClip) {
     f.baked.characterClipBase = {0, 3};
     backend::CrowdCharacterDesc characters[2] = {f.character, f.character};
     f.desc.characters = characters;
-    character::ImpostorAtlas two = test::makeTestAtlas(2 * TS_IMPOSTOR_PHASES);
+    character::ImpostorAtlas two = test::syntheticImpostorAtlas(0, 2);
     characters[0].impostor = &two;
     EXPECT_TRUE(backend::checkCrowdDesc(f.desc));
     characters[0].impostor = &f.impostor;

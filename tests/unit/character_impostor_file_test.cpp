@@ -5,7 +5,7 @@
 #include "tessera/character/ImpostorFile.h"
 #include "tessera/shaders/CrowdImpostor.h"
 
-#include "ImpostorTestAtlas.h"
+#include "SyntheticImpostorAtlas.h"
 #include "TestFiles.h"
 
 #include <gtest/gtest.h>
@@ -53,7 +53,7 @@ void expectRefused(const std::vector<uint8_t>& bytes, const std::string& name,
 } // namespace
 
 TEST(ImpostorFile, RoundTripsAnAtlasByteForByte) {
-    const ImpostorAtlas atlas = test::makeTestAtlas(2 * TS_IMPOSTOR_PHASES);
+    const ImpostorAtlas atlas = test::syntheticImpostorAtlas(0, 2);
     const std::filesystem::path file = test::testOutputDir("impostor_file") / "round_trip.impostor";
     ASSERT_TRUE(writeImpostorFile(file, atlas));
     EXPECT_EQ(std::filesystem::file_size(file), atlas.bytes() + 56);
@@ -64,7 +64,7 @@ TEST(ImpostorFile, RoundTripsAnAtlasByteForByte) {
 }
 
 TEST(ImpostorFile, RefusesTruncatedCorruptAndForeignFiles) {
-    const std::vector<uint8_t> good = encodeImpostorAtlas(test::makeTestAtlas());
+    const std::vector<uint8_t> good = encodeImpostorAtlas(test::syntheticImpostorAtlas(0, 1));
     expectRefused({}, "empty", {"truncated: 0 bytes"});
     expectRefused({good.begin(), good.begin() + 5}, "five_bytes", {"truncated: 5 bytes"});
     expectRefused({good.begin(), good.begin() + 30}, "part_header", {"truncated: 30 bytes, the header alone takes 56"});
@@ -80,7 +80,7 @@ TEST(ImpostorFile, RefusesTruncatedCorruptAndForeignFiles) {
 }
 
 TEST(ImpostorFile, RefusesAnotherVersionOrLayout) {
-    const std::vector<uint8_t> good = encodeImpostorAtlas(test::makeTestAtlas());
+    const std::vector<uint8_t> good = encodeImpostorAtlas(test::syntheticImpostorAtlas(0, 1));
     std::vector<uint8_t> bytes = good;
     put32(bytes, 8, kImpostorFileVersion + 1);
     expectRefused(bytes, "version", {"version 2, this build reads version 1"});
@@ -115,7 +115,7 @@ TEST(ImpostorFile, NamesAMissingOrUnwritableFile) {
     ASSERT_FALSE(read);
     EXPECT_EQ(read.error().message, missing.string() + ": cannot open the impostor file");
     const std::filesystem::path nowhere = test::testOutputDir("impostor_file") / "no_such_dir" / "x.impostor";
-    const Status written = writeImpostorFile(nowhere, test::makeTestAtlas());
+    const Status written = writeImpostorFile(nowhere, test::syntheticImpostorAtlas(0, 1));
     ASSERT_FALSE(written);
     EXPECT_EQ(written.error().message, nowhere.string() + ": cannot write the impostor file");
 }
