@@ -71,6 +71,11 @@ void expectWellFormed(const std::vector<Record>& records, int width, int height)
         EXPECT_GT(number(r, "gpu_ms_median"), 0.0);
         EXPECT_LE(number(r, "gpu_ms_min"), number(r, "gpu_ms_median"));
         EXPECT_LE(number(r, "gpu_ms_median"), number(r, "gpu_ms_max"));
+        // The frame's fragments (issue 32's overdraw figure), over the pixels.
+        ASSERT_TRUE(r.count("fragment_shader_invocations") && r.count("fragments_per_pixel"));
+        EXPECT_GT(number(r, "fragments_per_pixel"), 0.0);
+        EXPECT_NEAR(number(r, "fragments_per_pixel"),
+                    number(r, "fragment_shader_invocations") / (number(r, "width") * number(r, "height")), 1e-3);
     }
 }
 

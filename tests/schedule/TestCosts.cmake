@@ -125,3 +125,7 @@ set_tests_properties([=[EveryBackend/GoldenImage.MatchesApprovedImageWithNoValid
 set_tests_properties([=[CrowdProgress.AgentsReachTheirGoalsInTheOpen]=] PROPERTIES COST 10)
 set_tests_properties([=[asan.CrowdScene.CullingKeepsEveryAgentInView]=] PROPERTIES COST 10)
 set_tests_properties([=[BackendInitFailure.InASwitchTheOldBackendDrawsOn]=] PROPERTIES COST 10)
+set_tests_properties([=[EveryBackend/FragmentsPerPixel.TheFlythroughAndTheShowcaseShadeEachPixelAboutOnce/hulldomain  # GetParam() = "hulldomain"]=] PROPERTIES COST 40)
+set_tests_properties([=[EveryBackend/FragmentsPerPixel.TheFlythroughAndTheShowcaseShadeEachPixelAboutOnce/streamout  # GetParam() = "streamout"]=] PROPERTIES COST 40)
+set_tests_properties([=[EveryBackend/FragmentsPerPixel.TheFlythroughAndTheShowcaseShadeEachPixelAboutOnce/r2vb  # GetParam() = "r2vb"]=] PROPERTIES COST 40)
+set_tests_properties([=[EveryBackend/FragmentsPerPixel.TheFlythroughAndTheShowcaseShadeEachPixelAboutOnce/meshshader  # GetParam() = "meshshader"]=] PROPERTIES COST 40)

@@ -18,6 +18,11 @@ bool sameRow(const TerrainBenchRecord& a, const TerrainBenchRecord& b) {
            a.width == b.width && a.height == b.height;
 }
 
+double fragmentsPerPixel(const TerrainBenchRecord& r) {
+    const double pixels = double(r.width) * double(r.height);
+    return pixels > 0.0 ? double(r.fragmentShaderInvocations) / pixels : 0.0;
+}
+
 } // namespace
 
 const TerrainBenchRecord* matchingRecord(const std::vector<TerrainBenchRecord>& records, const TerrainBenchRecord& r,
@@ -64,6 +69,9 @@ std::string terrainBenchJson(const std::vector<TerrainBenchRecord>& records) {
         json.keyValue("vertex_shader_invocations", r.vertexShaderInvocations);
         json.keyValue("tess_evaluation_invocations", r.tessEvaluationInvocations);
         json.keyValue("geometry_shader_invocations", r.geometryShaderInvocations);
+        json.keyValue("fragment_shader_invocations", r.fragmentShaderInvocations);
+        json.key("fragments_per_pixel");
+        json.valueFixed(fragmentsPerPixel(r), 4);
         json.keyValue("task_shader_invocations", r.taskShaderInvocations);
         json.keyValue("mesh_shader_invocations", r.meshShaderInvocations);
         json.keyValue("mesh_primitives", r.meshPrimitives);
@@ -82,6 +90,7 @@ std::string terrainBenchJson(const std::vector<TerrainBenchRecord>& records) {
             json.keyValue(prefix + "vertex_shader_invocations", p.vertexShaderInvocations);
             json.keyValue(prefix + "tess_evaluation_invocations", p.tessEvaluationInvocations);
             json.keyValue(prefix + "geometry_shader_invocations", p.geometryShaderInvocations);
+            json.keyValue(prefix + "fragment_shader_invocations", p.fragmentShaderInvocations);
         }
         if (const TerrainBenchRecord* ref = matchingRecord(records, r, kComparisonReference)) {
             if (ref->gpuMsMedian > 0.0) {
@@ -100,14 +109,14 @@ std::string terrainBenchJson(const std::vector<TerrainBenchRecord>& records) {
 }
 
 std::string terrainBenchTable(const std::vector<TerrainBenchRecord>& records) {
-    std::string out = format("%-26s %-11s %-6s %-5s %-11s %-10s %10s %7s %9s %9s %9s %9s\n", "device", "backend",
-                             "view", "look", "mode", "metric", "triangles", "patches", "min ms", "median ms", "max ms",
-                             "cpu ms");
+    std::string out = format("%-26s %-11s %-6s %-5s %-11s %-10s %10s %7s %9s %9s %9s %9s %7s\n", "device",
+                             "backend", "view", "look", "mode", "metric", "triangles", "patches", "min ms", "median ms",
+                             "max ms", "cpu ms", "frag/px");
     for (const auto& r : records)
-        out += format("%-26.26s %-11s %-6s %-5s %-11s %-10s %10llu %7u %9.3f %9.3f %9.3f %9.3f\n", r.device.c_str(),
-                      r.backend.c_str(), r.view.c_str(), r.look.c_str(), r.mode.c_str(), r.metric.c_str(),
-                      static_cast<unsigned long long>(r.triangles), r.patches, r.gpuMsMin, r.gpuMsMedian, r.gpuMsMax,
-                      r.cpuFrameMsMedian);
+        out += format("%-26.26s %-11s %-6s %-5s %-11s %-10s %10llu %7u %9.3f %9.3f %9.3f %9.3f %7.2f\n",
+                      r.device.c_str(), r.backend.c_str(), r.view.c_str(), r.look.c_str(), r.mode.c_str(),
+                      r.metric.c_str(), static_cast<unsigned long long>(r.triangles), r.patches, r.gpuMsMin,
+                      r.gpuMsMedian, r.gpuMsMax, r.cpuFrameMsMedian, fragmentsPerPixel(r));
     out += "\nRatios to lowres in the same run (GPU median time, triangles):\n";
     for (const auto& base : records) {
         if (base.mode != "lowres" || base.gpuMsMedian <= 0.0 || base.triangles == 0) continue;

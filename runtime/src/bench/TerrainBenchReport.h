@@ -18,6 +18,7 @@ struct TerrainBenchPass {
     uint64_t vertexShaderInvocations = 0;
     uint64_t tessEvaluationInvocations = 0;
     uint64_t geometryShaderInvocations = 0;
+    uint64_t fragmentShaderInvocations = 0;
 };
 
 struct TerrainBenchRecord {
@@ -54,6 +55,11 @@ struct TerrainBenchRecord {
     uint64_t vertexShaderInvocations = 0;
     uint64_t tessEvaluationInvocations = 0;
     uint64_t geometryShaderInvocations = 0;
+    /// Fragment shader invocations over every pass of the median GPU frame,
+    /// offscreen ones (the sun's and the characters' shadow maps) included:
+    /// divided by width x height, the frame's fragments per pixel (its
+    /// overdraw; issue 32's bound is 2 at 1280 x 720).
+    uint64_t fragmentShaderInvocations = 0;
     /// Task and mesh shader invocations and the primitives the mesh shaders
     /// emitted (VK_EXT_mesh_shader's counters; 0 on the other backends).
     uint64_t taskShaderInvocations = 0;
@@ -82,11 +88,13 @@ const TerrainBenchRecord* matchingRecord(const std::vector<TerrainBenchRecord>& 
 /// patches, frames, metric, target_px, continuous_level, tess_max,
 /// clipping_invocations, vertex_shader_invocations,
 /// tess_evaluation_invocations, geometry_shader_invocations,
-/// intermediate_bytes, trace (the trace file or ""), passes (the pass names,
-/// comma-separated) and per pass "pass:<name>:gpu_ms_median",
+/// fragment_shader_invocations, fragments_per_pixel (the former over width x
+/// height), intermediate_bytes, trace (the trace file or ""), passes (the
+/// pass names, comma-separated) and per pass "pass:<name>:gpu_ms_median",
 /// "pass:<name>:clipping_invocations", "pass:<name>:vertex_shader_invocations",
-/// "pass:<name>:tess_evaluation_invocations" and
-/// "pass:<name>:geometry_shader_invocations". Where the same run has a
+/// "pass:<name>:tess_evaluation_invocations",
+/// "pass:<name>:geometry_shader_invocations" and
+/// "pass:<name>:fragment_shader_invocations". Where the same run has a
 /// hulldomain record of the same device, view, mode, metric and levels, also
 /// gpu_ms_vs_hulldomain and clipping_invocations_vs_hulldomain (ratios).
 std::string terrainBenchJson(const std::vector<TerrainBenchRecord>& records);

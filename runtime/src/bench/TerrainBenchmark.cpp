@@ -136,6 +136,7 @@ TerrainBenchRecord makeRecord(const RenderSession& session, const char* view,
         r.vertexShaderInvocations = stats->vertexShaderInvocations;
         r.tessEvaluationInvocations = stats->tessEvaluationInvocations;
         r.geometryShaderInvocations = stats->geometryShaderInvocations;
+        r.fragmentShaderInvocations = stats->fragmentShaderInvocations;
         r.taskShaderInvocations = stats->taskShaderInvocations;
         r.meshShaderInvocations = stats->meshShaderInvocations;
         r.meshPrimitives = stats->meshPrimitivesGenerated;
@@ -150,6 +151,7 @@ TerrainBenchRecord makeRecord(const RenderSession& session, const char* view,
             p.vertexShaderInvocations = pass.statsMedianFrame->vertexShaderInvocations;
             p.tessEvaluationInvocations = pass.statsMedianFrame->tessEvaluationInvocations;
             p.geometryShaderInvocations = pass.statsMedianFrame->geometryShaderInvocations;
+            p.fragmentShaderInvocations = pass.statsMedianFrame->fragmentShaderInvocations;
         }
         if (p.name == terrainPass) r.clippingInvocations = p.clippingInvocations;
         r.passes.push_back(std::move(p));

@@ -1,0 +1,62 @@
+// Overdraw (issue 32): the terrain flythrough at --tess-target 8 and the
+// default showcase shade at most 2 fragments per pixel at 1280 x 720 on
+// every backend, offscreen passes (the sun's and the characters' shadow
+// maps) included. Pipeline statistics count fragment shader invocations
+// exactly, so this is a count, not a timing: the figure of the median GPU
+// frame of a short run (--benchmark's statsMedianFrame).
+#include "DemoProcess.h"
+#include "TestFiles.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace tessera::test;
+
+namespace {
+
+constexpr int kWidth = 1280, kHeight = 720;
+constexpr double kMostFragmentsPerPixel = 2.0;
+
+class FragmentsPerPixel : public ::testing::TestWithParam<const char*> {};
+
+/// Fragment shader invocations per pixel of the median GPU frame of the
+/// demo run with `args` on `backend`; negative (with a test failure) when
+/// the run or its JSON fails.
+double fragmentsPerPixel(const std::string& backend, const std::string& name, std::vector<std::string> args) {
+    const std::string json = (testOutputDir("fragments_per_pixel") / (name + "_" + backend + ".json")).string();
+    args.insert(args.end(), {"--backend", backend, "--width", std::to_string(kWidth), "--height",
+                             std::to_string(kHeight), "--frames", "3", "--benchmark", json});
+    const ProcessResult run = runDemo(args);
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    if (run.exitCode != 0) return -1.0;
+    std::ifstream in(json);
+    const nlohmann::json report = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    const nlohmann::json& stats = report["gpuFrame"]["statsMedianFrame"];
+    EXPECT_TRUE(stats.is_object()) << json << ": no pipeline statistics";
+    if (!stats.is_object()) return -1.0;
+    const double fragments = stats["fragmentShaderInvocations"].get<double>();
+    return fragments / (double(kWidth) * double(kHeight));
+}
+
+} // namespace
+
+TEST_P(FragmentsPerPixel, TheFlythroughAndTheShowcaseShadeEachPixelAboutOnce) {
+    const std::string backend = GetParam();
+    if (!deviceRunsBackend(backend)) GTEST_SKIP() << "the device cannot run " << backend;
+    const double flythrough = fragmentsPerPixel(backend, "flythrough", {"--scene", "terrain", "--tess-target", "8"});
+    const double showcase = fragmentsPerPixel(backend, "showcase", {});
+    std::cout << "[fragments per pixel] " << backend << ": flythrough " << flythrough << ", showcase " << showcase
+              << " (1280 x 720)\n";
+    EXPECT_GT(flythrough, 0.5);
+    EXPECT_LE(flythrough, kMostFragmentsPerPixel);
+    EXPECT_GT(showcase, 0.5);
+    EXPECT_LE(showcase, kMostFragmentsPerPixel);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryBackend, FragmentsPerPixel, ::testing::Values("hulldomain", "streamout", "r2vb", "meshshader"),
+                         [](const auto& test) { return test.param; });
