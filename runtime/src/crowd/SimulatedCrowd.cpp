@@ -303,8 +303,16 @@ void SimulatedCrowd::update(double, const scene::Camera& camera, const Character
 
 void SimulatedCrowd::shadowCasters(const glm::vec3& region, uint32_t limit, std::vector<glm::vec4>& out) {
     out.clear();
-    for (const glm::vec3& p : mCrowd->agents().position)
-        if (insideRegion(region, p)) out.emplace_back(p, kCreatureHeight);
+    const crowd::CrowdAgents& agents = mCrowd->agents();
+    const uint32_t creatures = uint32_t(mAssets.size());
+    for (uint32_t i = 0; i < agents.position.size(); ++i) {
+        const glm::vec3& p = agents.position[i];
+        if (!insideRegion(region, p)) continue;
+        // As tall as it is drawn (agentWorld's scale): a creature of another
+        // build mixed in (--model) casts its own size, not the crowd's mean.
+        const CreatureGait& gait = mGait.creatures[agents.id[i] % creatures];
+        out.emplace_back(p, gait.height * gait.scale * agents.radius[i] / mGait.strideRadius);
+    }
     keepNearest(region, limit, out);
 }
 

@@ -65,7 +65,8 @@ public:
     InstancedCrowd* instancedCrowd() override { return mInstanced.get(); }
     void useInstancedCrowd(bool instanced) override { mInstancedActive = instanced && mInstanced != nullptr; }
     uint32_t instanceCapacity() const override { return mCrowd->stats().agents; }
-    /// Every agent in `region`, drawn instanced or not, kCreatureHeight tall.
+    /// Every agent in `region`, drawn instanced or not, as tall as it is
+    /// drawn (its creature's rest height at the agent's scale).
     void shadowCasters(const glm::vec3& region, uint32_t limit, std::vector<glm::vec4>& out) override;
     std::span<const backend::CharacterDrawItem> items() const override { return mPoser.items(); }
     /// Circling the spawn's centre (--orbit-distance, default 30 m), high
