@@ -213,11 +213,15 @@ glm::vec3 SimulatedCrowd::standing(const glm::vec3& position) const {
     return {position.x, mGround->heightAt(position.x, position.z), position.z};
 }
 
-glm::mat4 SimulatedCrowd::agentWorld(uint32_t agent, uint32_t creature) const {
-    const crowd::CrowdAgents& agents = mCrowd->agents();
+float SimulatedCrowd::agentScale(uint32_t agent, uint32_t creature) const {
     // An agent's stride grows with its radius (CrowdSettings::strideRadius),
     // so its creature does too.
-    const float scale = mGait.creatures[creature].scale * agents.radius[agent] / mGait.strideRadius;
+    return mGait.creatures[creature].scale * mCrowd->agents().radius[agent] / mGait.strideRadius;
+}
+
+glm::mat4 SimulatedCrowd::agentWorld(uint32_t agent, uint32_t creature) const {
+    const crowd::CrowdAgents& agents = mCrowd->agents();
+    const float scale = agentScale(agent, creature);
     glm::mat4 world = glm::translate(glm::mat4(1.0f), standing(agents.position[agent]));
     world = glm::rotate(world, agents.heading[agent], glm::vec3(0, 1, 0));
     return glm::scale(world, glm::vec3(scale));
@@ -234,8 +238,7 @@ void SimulatedCrowd::updateInstances(const scene::Camera& camera, const Characte
             const uint32_t creature = agents.id[i] % creatures;
             const CreatureGait& gait = mGait.creatures[creature];
             const scene::Aabb& box = mAssets[creature].box;
-            // As agentWorld: the creature grows with the agent's radius.
-            const float scale = gait.scale * agents.radius[i] / mGait.strideRadius;
+            const float scale = agentScale(i, creature);
             const glm::vec3 p = standing(agents.position[i]);
             const glm::vec3 centre = box.center();
             shader::CrowdInstance instance;
@@ -308,10 +311,10 @@ void SimulatedCrowd::shadowCasters(const glm::vec3& region, uint32_t limit, std:
     for (uint32_t i = 0; i < agents.position.size(); ++i) {
         const glm::vec3& p = agents.position[i];
         if (!insideRegion(region, p)) continue;
-        // As tall as it is drawn (agentWorld's scale): a creature of another
-        // build mixed in (--model) casts its own size, not the crowd's mean.
-        const CreatureGait& gait = mGait.creatures[agents.id[i] % creatures];
-        out.emplace_back(p, gait.height * gait.scale * agents.radius[i] / mGait.strideRadius);
+        // As tall as it is drawn: a creature of another build mixed in
+        // (--model) casts its own size, not the crowd's mean.
+        const uint32_t creature = agents.id[i] % creatures;
+        out.emplace_back(p, mGait.creatures[creature].height * agentScale(i, creature));
     }
     keepNearest(region, limit, out);
 }

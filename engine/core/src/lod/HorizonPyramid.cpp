@@ -14,14 +14,17 @@ constexpr uint32_t kRun = 8;
 void HorizonPyramid::build(const float* occluders, uint32_t n) {
     mGrid = occluders;
     mSide = n;
-    mLevels.clear();
-    mSides.clear();
-    mSides.push_back(n);
+    mSides.assign(1, n);
+    // Rebuilt every frame (craters change the grid); the levels keep their storage.
+    size_t levels = 0;
+    for (uint32_t side = n; side > 1; side = (side + 1) / 2) ++levels;
+    mLevels.resize(levels);
     const float* below = occluders;
     uint32_t side = n;
-    while (side > 1) {
+    for (size_t k = 0; k < levels; ++k) {
         const uint32_t up = (side + 1) / 2;
-        std::vector<float> level(size_t(up) * up);
+        std::vector<float>& level = mLevels[k];
+        level.resize(size_t(up) * up);
         for (uint32_t j = 0; j < up; ++j)
             for (uint32_t i = 0; i < up; ++i) {
                 const uint32_t i1 = std::min(2 * i + 1, side - 1), j1 = std::min(2 * j + 1, side - 1);
@@ -29,9 +32,8 @@ void HorizonPyramid::build(const float* occluders, uint32_t n) {
                     std::max(std::max(below[size_t(2 * j) * side + 2 * i], below[size_t(2 * j) * side + i1]),
                              std::max(below[size_t(j1) * side + 2 * i], below[size_t(j1) * side + i1]));
             }
-        mLevels.push_back(std::move(level));
         mSides.push_back(up);
-        below = mLevels.back().data();
+        below = level.data();
         side = up;
     }
 }

@@ -31,7 +31,7 @@ bool continuesFadeFrom(uint32_t state, uint32_t tier) {
 bool meetsTheBudgets(uint32_t candidate, uint32_t state) {
     const uint32_t previous = shader::tsLodStatePrevious(state);
     return candidate <= TS_LOD_FAR || shader::tsLodStateTier(state) <= TS_LOD_FAR ||
-           (previous <= TS_LOD_FAR && shader::tsLodStateFade(state) >= 2u);
+           (previous <= TS_LOD_FAR && continuesFadeFrom(state, previous));
 }
 
 } // namespace

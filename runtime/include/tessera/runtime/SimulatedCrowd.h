@@ -102,6 +102,8 @@ private:
     /// Where an agent at `position` (on the height field) is drawn standing:
     /// its (x, z) on the drawn ground.
     glm::vec3 standing(const glm::vec3& position) const;
+    /// The draw scale of agent `agent` as creature `creature`.
+    float agentScale(uint32_t agent, uint32_t creature) const;
     glm::mat4 agentWorld(uint32_t agent, uint32_t creature) const;
     /// Every agent as an instance of the instanced crowd, and its LOD selection.
     void updateInstances(const scene::Camera& camera, const CharacterLevels& levels);
