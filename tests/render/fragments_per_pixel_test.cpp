@@ -3,7 +3,11 @@
 // every backend, offscreen passes (the sun's and the characters' shadow
 // maps) included. Pipeline statistics count fragment shader invocations
 // exactly, so this is a count, not a timing: the figure of the median GPU
-// frame of a short run (--benchmark's statsMedianFrame).
+// frame of a short run (--benchmark's statsMedianFrame). One warm-up frame
+// runs first and is not measured: the first frame also bakes the terrain's
+// sun-visibility map once (terrain.sun, 1024 x 1024 fragments, 1.14 per
+// pixel at this size), and on a loaded machine that frame's time can be the
+// median of three (CI read 2.16 for the meshshader flythrough so).
 #include "DemoProcess.h"
 #include "TestFiles.h"
 
@@ -39,7 +43,7 @@ double fragmentsPerPixel(const std::string& backend, const std::string& name, st
                          std::string& driver) {
     const std::string json = (testOutputDir("fragments_per_pixel") / (name + "_" + backend + ".json")).string();
     args.insert(args.end(), {"--backend", backend, "--width", std::to_string(kWidth), "--height",
-                             std::to_string(kHeight), "--frames", "3", "--benchmark", json});
+                             std::to_string(kHeight), "--warmup", "1", "--frames", "3", "--benchmark", json});
     const ProcessResult run = runDemo(args);
     EXPECT_EQ(run.exitCode, 0) << run.output;
     if (run.exitCode != 0) return -1.0;
