@@ -156,6 +156,52 @@ TEST(CrowdAnimation, WalkPhaseFollowsTheGroundCovered) {
     }
 }
 
+TEST(CrowdAnimation, EachKindOfWalkerWalksItsOwnStride) {
+    // Two kinds of walker (CrowdSettings::kinds), as a crowd of froblins and
+    // a human model mixed in (--model) has: a short quick stride and a long
+    // slow one. Each agent's phase follows the ground it covers by its own
+    // kind's stride, and each walks within its own clip's range of speeds.
+    auto ground = flatTerrain(257, 1.0f);
+    CrowdSettings settings = testSettings();
+    settings.strideRadius = 0.4f;
+    settings.kinds = {{0.6f, 1.1f, 2.5f}, {2.2f, 2.0f, 3.0f}};
+    SpawnPattern spawn{Region::rect({20.0f, 20.0f}, {40.0f, 236.0f}), 30, 6, 0, 0.38f, 0.42f, 0.7f, 0.8f};
+    auto crowd = makeCrowd(*ground, settings, {{"east", Region::rect({230.0f, 0.0f}, {256.0f, 256.0f})}}, {spawn});
+    ASSERT_TRUE(crowd);
+    const CrowdAgents& a = crowd->agents();
+    for (int s = 0; s < 60; ++s) crowd->step(); // get going
+    std::vector<glm::vec2> from(a.size());
+    std::vector<double> cycles(a.size(), 0.0);
+    std::vector<float> phase(a.size());
+    for (size_t i = 0; i < a.size(); ++i) from[a.id[i]] = xz(a.position[i]), phase[a.id[i]] = a.phase[i];
+    constexpr int kSteps = 150;
+    for (int s = 0; s < kSteps; ++s) {
+        crowd->step();
+        for (size_t i = 0; i < a.size(); ++i) {
+            const uint32_t id = a.id[i];
+            ASSERT_EQ(a.clip[i], AgentClip::Walk) << "agent " << id;
+            float advance = a.phase[i] - phase[id];
+            if (advance < 0.0f) advance += 1.0f;
+            cycles[id] += advance;
+            phase[id] = a.phase[i];
+        }
+    }
+    for (size_t i = 0; i < a.size(); ++i) {
+        const uint32_t id = a.id[i];
+        const WalkerKind& kind = settings.kinds[id % 2];
+        EXPECT_EQ(settings.kindOf(id).walkStrideLength, kind.walkStrideLength);
+        const float stride = kind.walkStrideLength * a.radius[i] / settings.strideRadius;
+        const float walked = glm::distance(from[id], xz(a.position[i]));
+        EXPECT_NEAR(float(cycles[id]) * stride, walked, 0.02f * walked) << "agent " << id << " of kind " << id % 2;
+        // Within its clip's pace: at least minWalkRate of it (the long
+        // stride's natural 1.1 m/s makes 0.7 to 0.8 m/s a slow walk of it).
+        const float natural = stride / kind.walkCycleSeconds;
+        const float speed = walked / (float(kSteps) * settings.timeStep);
+        EXPECT_GE(speed, settings.minWalkRate * natural * 0.98f) << "agent " << id;
+        EXPECT_LE(speed, settings.maxWalkRate * natural * 1.02f) << "agent " << id;
+    }
+}
+
 TEST(CrowdAnimation, StandingAgentsIdleAndArrivalsStop) {
     auto ground = flatTerrain(129, 1.0f);
     CrowdSettings settings = testSettings();

@@ -1,7 +1,10 @@
-// The crowd's shadow casters are as tall as their creatures are drawn: with
-// a model of another build mixed in (CesiumMan among the froblins, --model),
-// each agent's blob takes its own creature's rest height at the agent's
-// scale, not the crowd's mean (docs/CROWD.md 6.10, "Shadows").
+// Every creature of the crowd is drawn the crowd's height and walks its own
+// stride: with a model of another build mixed in (CesiumMan among the
+// froblins, --model), CesiumMan stands as tall as a froblin (before, the crowd
+// scaled every creature to one stride and drew it at a third of their size)
+// and walks its own long stride as a kind of walker of its own
+// (crowd::WalkerKind). The shadow casters are as tall as the creatures are
+// drawn (docs/CROWD.md 6.10, "Shadows").
 #include "SceneOptions.h"
 
 #include "tessera/runtime/SceneRun.h"
@@ -9,14 +12,13 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <vector>
 
 namespace tessera::runtime {
 namespace {
 
-TEST(CrowdCasterHeights, EachAgentCastsItsOwnCreaturesHeight) {
+TEST(CrowdCasterHeights, EveryCreatureStandsTheCrowdsHeightAndWalksItsOwnStride) {
     const std::filesystem::path cesiumMan =
         std::filesystem::path(TESSERA_TESTDATA_DIR) / "gltf" / "CesiumMan" / "glTF-Binary" / "CesiumMan.glb";
     if (!std::filesystem::exists(cesiumMan)) GTEST_SKIP() << cesiumMan << " is not there";
@@ -52,12 +54,15 @@ TEST(CrowdCasterHeights, EachAgentCastsItsOwnCreaturesHeight) {
         if (perRadius[creature] == 0.0f) perRadius[creature] = ratio;
         EXPECT_NEAR(ratio, perRadius[creature], 1e-3f * perRadius[creature]) << "creature " << creature;
     }
-    const float froblin = *std::max_element(perRadius.begin(), perRadius.begin() + 3);
-    EXPECT_GT(perRadius[3], 0.0f);
-    // The crowd scales every creature to one stride: CesiumMan, whose stride
-    // is long for its height, is drawn much shorter than a froblin, and so
-    // is its shadow's caster.
-    EXPECT_LT(perRadius[3], 0.6f * froblin);
+    // Each creature, CesiumMan too, the crowd's height at the stride radius.
+    const crowd::CrowdSettings& settings = crowd->crowd().settings();
+    for (uint32_t c = 0; c < creatures; ++c)
+        EXPECT_NEAR(perRadius[c], SimulatedCrowd::kCreatureHeight / settings.strideRadius, 1e-3f) << "creature " << c;
+    // Each its own stride: one kind of walker per creature, CesiumMan's
+    // stride at that size more than twice a froblin's.
+    ASSERT_EQ(settings.kinds.size(), creatures);
+    for (uint32_t c = 0; c < 3; ++c)
+        EXPECT_GT(settings.kinds[3].walkStrideLength, 2.0f * settings.kinds[c].walkStrideLength) << "froblin " << c;
 }
 
 } // namespace

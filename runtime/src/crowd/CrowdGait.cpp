@@ -20,21 +20,22 @@ float restHeight(const character::CageMesh& cage) {
 } // namespace
 
 void CrowdGait::apply(crowd::CrowdSettings& settings) const {
-    settings.walkStrideLength = walkStrideLength;
     settings.strideRadius = strideRadius;
-    // The walk clips' pace (their mean): the crowd keeps each clip between
-    // minWalkRate and maxWalkRate of it.
+    settings.kinds.clear();
+    for (size_t c = 0; c < creatures.size(); ++c)
+        settings.kinds.push_back({strideMetres(c), creatures[c].walkCycleSeconds, creatures[c].idleCycleSeconds});
+    // The means, for what reads the crowd's one gait (none of the steps do
+    // while it has kinds).
+    settings.walkStrideLength = walkStrideLength;
     settings.walkCycleSeconds = walkStrideLength / naturalSpeed;
-    settings.idleCycleSeconds = idleCycleSeconds;
+    if (!creatures.empty()) settings.idleCycleSeconds = creatures.front().idleCycleSeconds;
 }
 
 Result<CrowdGait> measureCrowdGait(const CharacterAssets& assets, float height, float strideRadius) {
     if (assets.empty()) return fail("the crowd scene has no creatures to draw");
     CrowdGait gait;
     gait.strideRadius = strideRadius;
-    // Height per stride, averaged: the crowd's stride that makes the mean
-    // creature `height` tall once each is scaled to walk that stride.
-    double heightPerStride = 0.0;
+    double stride = 0.0, speed = 0.0;
     for (const CrowdAsset& entry : assets.all()) {
         const character::CharacterAsset& asset = entry.asset;
         CreatureGait& creature = gait.creatures.emplace_back();
@@ -46,20 +47,19 @@ Result<CrowdGait> measureCrowdGait(const CharacterAssets& assets, float height, 
         if (creature.stride <= 0.0f || creature.height <= 0.0f)
             return fail(entry.file, ": its walk clip covers no ground (character::measureStride), so the crowd cannot ",
                         "keep its feet from sliding");
-        heightPerStride += double(creature.height / creature.stride) / double(assets.size());
+        // Every creature as tall as the others, whatever its file's units
+        // (a model in centimetres or of a giant stands `height` tall too); its
+        // stride follows from its clip at that size.
+        creature.scale = height / creature.height;
+        creature.walkCycleSeconds = asset.clips[size_t(creature.walkClip)].duration();
+        if (creature.idleClip >= 0 && creature.idleClip != creature.walkClip)
+            creature.idleCycleSeconds = asset.clips[size_t(creature.idleClip)].duration();
+        const double metres = double(creature.stride) * double(creature.scale);
+        stride += metres / double(assets.size());
+        speed += metres / double(creature.walkCycleSeconds) / double(assets.size());
     }
-    gait.walkStrideLength = float(double(height) / heightPerStride);
-    double speed = 0.0;
-    for (size_t i = 0; i < gait.creatures.size(); ++i) {
-        CreatureGait& creature = gait.creatures[i];
-        creature.scale = gait.walkStrideLength / creature.stride;
-        const auto& clips = assets[i].asset.clips;
-        speed += double(gait.walkStrideLength / clips[size_t(creature.walkClip)].duration()) / double(assets.size());
-    }
+    gait.walkStrideLength = float(stride);
     gait.naturalSpeed = float(speed);
-    const CreatureGait& first = gait.creatures.front();
-    if (first.idleClip >= 0 && first.idleClip != first.walkClip)
-        gait.idleCycleSeconds = assets[0].asset.clips[size_t(first.idleClip)].duration();
     return gait;
 }
 

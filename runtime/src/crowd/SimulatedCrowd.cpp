@@ -46,15 +46,15 @@ constexpr float kAcrossRise = 0.08f;
 constexpr float kLookHeight = 0.7f; // the camera aims this high above the spawn's centre
 
 std::string describeGait(const CrowdGait& gait, const CharacterAssets& assets) {
-    char text[160];
-    std::snprintf(text, sizeof text, "crowd gait: %.2f m per walk cycle at radius %.2f m, natural speed %.2f m/s;",
-                  double(gait.walkStrideLength), double(gait.strideRadius), double(gait.naturalSpeed));
+    char text[200];
+    std::snprintf(text, sizeof text, "crowd gait at radius %.2f m (mean %.2f m per walk cycle, %.2f m/s):",
+                  double(gait.strideRadius), double(gait.walkStrideLength), double(gait.naturalSpeed));
     std::string line = text;
     for (size_t i = 0; i < gait.creatures.size(); ++i) {
         const CreatureGait& c = gait.creatures[i];
-        std::snprintf(text, sizeof text, " %s %.2f m drawn x%.2f (%.2f m)",
+        std::snprintf(text, sizeof text, " %s %.2f units drawn x%.3g (%.2f m), %.2f m per %.2f s cycle",
                       std::filesystem::path(assets[i].file).filename().c_str(), double(c.height), double(c.scale),
-                      double(c.height * c.scale));
+                      double(c.height * c.scale), double(gait.strideMetres(i)), double(c.walkCycleSeconds));
         line += text;
     }
     return line;

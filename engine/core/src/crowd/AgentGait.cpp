@@ -30,10 +30,10 @@ void AgentGait::advance(const CrowdSettings& s, bool walking, float distance, Ag
         // not slide; a push that would play the clip faster than its
         // fastest is taken as slide instead.
         clip = AgentClip::Walk;
-        phase += std::min(distance / stride, s.maxWalkRate * s.timeStep / s.walkCycleSeconds);
+        phase += std::min(distance / stride, s.maxWalkRate * s.timeStep / walkCycle);
     } else {
         clip = AgentClip::Idle;
-        phase += s.timeStep / s.idleCycleSeconds;
+        phase += s.timeStep / idleCycle;
     }
     phase -= std::floor(phase);
 }

@@ -11,19 +11,28 @@
 namespace tessera::crowd {
 
 /// One agent's gait. The walk phase advances by distance / stride, so the
-/// clip plays at speed / (stride / walkCycleSeconds) times its own pace:
+/// clip plays at speed / (stride / walkCycle) times its own pace:
 /// keeping that rate within [minWalkRate, maxWalkRate] means walking no
 /// slower than `slowest` and no faster than `fastest`, or standing still.
 struct AgentGait {
-    float stride = 1.0f;  ///< metres per walk cycle
-    float slowest = 0.0f; ///< m/s
-    float fastest = 0.0f; ///< m/s
+    float stride = 1.0f;       ///< metres per walk cycle
+    float slowest = 0.0f;      ///< m/s
+    float fastest = 0.0f;      ///< m/s
+    float walkCycle = 1.0f;    ///< seconds per walk cycle at the clip's own pace
+    float idleCycle = 1.0f;    ///< seconds per idle cycle
 
-    /// The gait of an agent of `radius` (strides scale with the radius).
-    static AgentGait of(const CrowdSettings& settings, float radius) {
+    /// The gait of the agent with id `id` (its kind, CrowdSettings::kindOf)
+    /// and `radius` (strides scale with the radius).
+    static AgentGait of(const CrowdSettings& settings, uint32_t id, float radius) {
+        return of(settings, settings.kindOf(id), radius);
+    }
+    /// The gait of an agent of kind `kind` and `radius`.
+    static AgentGait of(const CrowdSettings& settings, const WalkerKind& kind, float radius) {
         AgentGait gait;
-        gait.stride = settings.walkStrideLength * radius / settings.strideRadius;
-        const float natural = gait.stride / settings.walkCycleSeconds;
+        gait.stride = kind.walkStrideLength * radius / settings.strideRadius;
+        gait.walkCycle = kind.walkCycleSeconds;
+        gait.idleCycle = kind.idleCycleSeconds;
+        const float natural = gait.stride / kind.walkCycleSeconds;
         gait.slowest = settings.minWalkRate * natural;
         gait.fastest = settings.maxWalkRate * natural;
         return gait;

@@ -71,6 +71,17 @@ Status checkSettings(const CrowdSettings& s, const terrain::Terrain& terrain) {
     };
     for (const Status& check : checks)
         if (!check) return check;
+    for (size_t k = 0; k < s.kinds.size(); ++k) {
+        const WalkerKind& kind = s.kinds[k];
+        const std::string name = "kinds[" + std::to_string(k) + "].";
+        const Status kindChecks[] = {
+            range((name + "walkStrideLength").c_str(), kind.walkStrideLength, 1e-3f, 1e3f),
+            range((name + "walkCycleSeconds").c_str(), kind.walkCycleSeconds, 1e-3f, 1e3f),
+            range((name + "idleCycleSeconds").c_str(), kind.idleCycleSeconds, 1e-3f, 1e3f),
+        };
+        for (const Status& check : kindChecks)
+            if (!check) return check;
+    }
     if (s.maxNeighbours < 1 || s.maxNeighbours > 16)
         return fail("crowd settings: maxNeighbours is ", std::to_string(s.maxNeighbours), "; it must be 1 to 16");
     if (s.separationIterations > 16)

@@ -299,7 +299,7 @@ void Crowd::steer() {
                 if (shift != 0.0f) preferred = rotate(preferred, shift);
             }
             // No faster than the walk clip plays without sliding.
-            const AgentGait gait = AgentGait::of(s, a.radius[i]);
+            const AgentGait gait = AgentGait::of(s, a.id[i], a.radius[i]);
             if (const float wanted = glm::length(preferred); wanted > gait.fastest) preferred *= gait.fastest / wanted;
             const float maxSpeed = std::min(std::max(glm::length(preferred), 0.25f * speed), gait.fastest);
             // Walls: the nearest points of the impassable cells within reach
@@ -416,7 +416,7 @@ void Crowd::finishStep() {
             const glm::vec2 p = st.moved[i];
             // The clip follows the ground actually covered (separation's
             // pushes included), so feet stay planted.
-            AgentGait::of(s, a.radius[i])
+            AgentGait::of(s, a.id[i], a.radius[i])
                 .advance(s, a.velocity[i] != glm::vec2(0.0f), glm::distance(p, xz(a.position[i])), a.clip[i], a.phase[i]);
             a.position[i] = glm::vec3(p.x, mTerrain.heightAt(p.x, p.y), p.y);
             st.flags[i] &= ~kArrived;

@@ -3,7 +3,10 @@
 /// Every tunable of the crowd simulation, with the defaults the demo and the
 /// benchmark use. docs/CROWD.md explains each group of settings.
 
+#include "tessera/crowd/WalkerKind.h"
+
 #include <cstdint>
+#include <vector>
 
 namespace tessera::crowd {
 
@@ -99,6 +102,18 @@ struct CrowdSettings {
     float maxWalkRate = 2.2f;
     /// Length of one idle-clip cycle (seconds).
     float idleCycleSeconds = 2.5f;
+    /// Kinds of walker, e.g. one per drawn model: the agent with id `id` is
+    /// of kind `id % kinds.size()` (kindOf) and walks with that kind's stride
+    /// and clip lengths instead of walkStrideLength, walkCycleSeconds and
+    /// idleCycleSeconds above, which hold for every agent while this is
+    /// empty (the default).
+    std::vector<WalkerKind> kinds;
+
+    /// The gait of the agent with id `id`: its kind's, or the one above.
+    WalkerKind kindOf(uint32_t id) const {
+        return kinds.empty() ? WalkerKind{walkStrideLength, walkCycleSeconds, idleCycleSeconds}
+                             : kinds[id % kinds.size()];
+    }
 
     // --- Progress -----------------------------------------------------------
     /// An agent that wants to walk but has not got `stuckProgress` metres
