@@ -3,13 +3,21 @@
 #include "tessera/gpu/Device.h"
 #include "tessera/gpu/VulkanCheck.h"
 
+#include <utility>
+
 namespace tessera::gpu {
 
-Sampler::Sampler(Device& device, VkFilter filter, VkSamplerAddressMode address, std::string name) {
+Sampler::Sampler(Device& device, VkFilter filter, VkSamplerAddressMode address, std::string name)
+    : Sampler(device, filter,
+              filter == VK_FILTER_LINEAR ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST, address,
+              std::move(name)) {}
+
+Sampler::Sampler(Device& device, VkFilter filter, VkSamplerMipmapMode mipmap, VkSamplerAddressMode address,
+                 std::string name) {
     VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     info.magFilter = filter;
     info.minFilter = filter;
-    info.mipmapMode = filter == VK_FILTER_LINEAR ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    info.mipmapMode = mipmap;
     info.addressModeU = info.addressModeV = info.addressModeW = address;
     info.maxLod = VK_LOD_CLAMP_NONE;
     VkSampler sampler = VK_NULL_HANDLE;
