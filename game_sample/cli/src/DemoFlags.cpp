@@ -32,7 +32,8 @@ void declareDemoFlags(cli::CommandLine& line, runtime::Options& o, DemoFlagText&
 
     group("Backend and device");
     text("--backend", o.backend, "NAME",
-         "r2vb | streamout | hulldomain | null (default: the most capable backend the device can run); with "
+         "r2vb | streamout | hulldomain | meshshader | null (default: hulldomain on a GPU, streamout on a CPU "
+         "rasterizer such as lavapipe, where it is the fastest; else the next the device runs); with "
          "--bench terrain, characters, crowd or subdiv also \"all\": every GPU backend side by side");
     flag("--list-backends", o.listBackends, "list backends and their capabilities on the device");
     text("--device", o.device, "NAME|INDEX", "pick a Vulkan device by index or name substring");

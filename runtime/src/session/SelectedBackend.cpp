@@ -68,6 +68,13 @@ Result<std::unique_ptr<SelectedBackend>> selectBackend(const Options& options) {
     if (selected->registry.names().empty())
         return fail("no backend plugin could be loaded: ",
                     loadErrors.empty() ? "none found" : reporter.wording(loadErrors.front()));
+    // Unnamed, the order depends on the device: every preferred backend
+    // needs one, so it is opened first.
+    if (options.backend.empty()) {
+        if (Status ok = openDevice(options, *selected); !ok) return ok.error();
+        if (selected->device->features().isCpu)
+            candidates.assign(std::begin(kCpuBackendPreference), std::end(kCpuBackendPreference));
+    }
 
     for (const auto& name : candidates) {
         if (!selected->registry.contains(name)) continue;

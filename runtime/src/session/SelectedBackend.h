@@ -27,7 +27,8 @@ struct SelectedBackend {
 };
 
 /// Chooses and creates the backend (and device) described by `options`:
-/// Options::backend, else the first of kBackendPreference the device runs.
+/// Options::backend, else the first the device runs of kBackendPreference
+/// (kCpuBackendPreference on a CPU rasterizer).
 Result<std::unique_ptr<SelectedBackend>> selectBackend(const Options& options);
 
 /// Replaces `selected`'s backend with a new instance of backend `name` on the
