@@ -118,6 +118,35 @@ TEST(CrowdAnimation, FeetStayPlanted) {
     EXPECT_GT(crowd->stats().staying, n / 10) << "some should have stopped at their goals too";
 }
 
+/// Walk cycles each agent (by id) plays over `steps` steps after 60 to get
+/// going, every agent walking throughout, and where each started (`from`).
+struct CyclesWalked {
+    std::vector<glm::vec2> from;
+    std::vector<double> cycles;
+};
+CyclesWalked walkCycles(Crowd& crowd, int steps) {
+    const CrowdAgents& a = crowd.agents();
+    for (int s = 0; s < 60; ++s) crowd.step(); // get going
+    // Per agent id (indices change as the crowd re-sorts itself).
+    CyclesWalked walked{std::vector<glm::vec2>(a.size()), std::vector<double>(a.size(), 0.0)};
+    std::vector<float> phase(a.size());
+    for (size_t i = 0; i < a.size(); ++i) walked.from[a.id[i]] = xz(a.position[i]), phase[a.id[i]] = a.phase[i];
+    for (int s = 0; s < steps; ++s) {
+        crowd.step();
+        for (size_t i = 0; i < a.size(); ++i) {
+            const uint32_t id = a.id[i];
+            EXPECT_EQ(a.clip[i], AgentClip::Walk) << "agent " << id;
+            EXPECT_GE(a.phase[i], 0.0f);
+            EXPECT_LT(a.phase[i], 1.0f);
+            float advance = a.phase[i] - phase[id];
+            if (advance < 0.0f) advance += 1.0f;
+            walked.cycles[id] += advance;
+            phase[id] = a.phase[i];
+        }
+    }
+    return walked;
+}
+
 TEST(CrowdAnimation, WalkPhaseFollowsTheGroundCovered) {
     auto ground = flatTerrain(257, 1.0f);
     CrowdSettings settings = testSettings();
@@ -127,32 +156,14 @@ TEST(CrowdAnimation, WalkPhaseFollowsTheGroundCovered) {
     SpawnPattern spawn{Region::rect({20.0f, 20.0f}, {40.0f, 236.0f}), 30, 6, 0, 0.3f, 0.5f};
     auto crowd = makeCrowd(*ground, settings, {{"east", Region::rect({230.0f, 0.0f}, {256.0f, 256.0f})}}, {spawn});
     ASSERT_TRUE(crowd);
-    const CrowdAgents& a = crowd->agents();
-    for (int s = 0; s < 60; ++s) crowd->step(); // get going
-    // Per agent id (indices change as the crowd re-sorts itself).
-    std::vector<glm::vec2> from(a.size());
-    std::vector<double> cycles(a.size(), 0.0);
-    std::vector<float> phase(a.size());
-    for (size_t i = 0; i < a.size(); ++i) from[a.id[i]] = xz(a.position[i]), phase[a.id[i]] = a.phase[i];
-    for (int s = 0; s < 150; ++s) {
-        crowd->step();
-        for (size_t i = 0; i < a.size(); ++i) {
-            const uint32_t id = a.id[i];
-            ASSERT_EQ(a.clip[i], AgentClip::Walk) << "agent " << id;
-            ASSERT_GE(a.phase[i], 0.0f);
-            ASSERT_LT(a.phase[i], 1.0f);
-            float advance = a.phase[i] - phase[id];
-            if (advance < 0.0f) advance += 1.0f;
-            cycles[id] += advance;
-            phase[id] = a.phase[i];
-        }
-    }
+    const CyclesWalked walked = walkCycles(*crowd, 150);
     // Cycles times this agent's stride is the distance walked.
+    const CrowdAgents& a = crowd->agents();
     for (size_t i = 0; i < a.size(); ++i) {
         const uint32_t id = a.id[i];
         const float stride = settings.walkStrideLength * a.radius[i] / settings.strideRadius;
-        const float walked = glm::distance(from[id], xz(a.position[i]));
-        EXPECT_NEAR(float(cycles[id]) * stride, walked, 0.02f * walked) << "agent " << id;
+        const float distance = glm::distance(walked.from[id], xz(a.position[i]));
+        EXPECT_NEAR(float(walked.cycles[id]) * stride, distance, 0.02f * distance) << "agent " << id;
     }
 }
 
@@ -168,35 +179,21 @@ TEST(CrowdAnimation, EachKindOfWalkerWalksItsOwnStride) {
     SpawnPattern spawn{Region::rect({20.0f, 20.0f}, {40.0f, 236.0f}), 30, 6, 0, 0.38f, 0.42f, 0.7f, 0.8f};
     auto crowd = makeCrowd(*ground, settings, {{"east", Region::rect({230.0f, 0.0f}, {256.0f, 256.0f})}}, {spawn});
     ASSERT_TRUE(crowd);
-    const CrowdAgents& a = crowd->agents();
-    for (int s = 0; s < 60; ++s) crowd->step(); // get going
-    std::vector<glm::vec2> from(a.size());
-    std::vector<double> cycles(a.size(), 0.0);
-    std::vector<float> phase(a.size());
-    for (size_t i = 0; i < a.size(); ++i) from[a.id[i]] = xz(a.position[i]), phase[a.id[i]] = a.phase[i];
     constexpr int kSteps = 150;
-    for (int s = 0; s < kSteps; ++s) {
-        crowd->step();
-        for (size_t i = 0; i < a.size(); ++i) {
-            const uint32_t id = a.id[i];
-            ASSERT_EQ(a.clip[i], AgentClip::Walk) << "agent " << id;
-            float advance = a.phase[i] - phase[id];
-            if (advance < 0.0f) advance += 1.0f;
-            cycles[id] += advance;
-            phase[id] = a.phase[i];
-        }
-    }
+    const CyclesWalked walked = walkCycles(*crowd, kSteps);
+    const CrowdAgents& a = crowd->agents();
     for (size_t i = 0; i < a.size(); ++i) {
         const uint32_t id = a.id[i];
         const WalkerKind& kind = settings.kinds[id % 2];
         EXPECT_EQ(settings.kindOf(id).walkStrideLength, kind.walkStrideLength);
         const float stride = kind.walkStrideLength * a.radius[i] / settings.strideRadius;
-        const float walked = glm::distance(from[id], xz(a.position[i]));
-        EXPECT_NEAR(float(cycles[id]) * stride, walked, 0.02f * walked) << "agent " << id << " of kind " << id % 2;
+        const float distance = glm::distance(walked.from[id], xz(a.position[i]));
+        EXPECT_NEAR(float(walked.cycles[id]) * stride, distance, 0.02f * distance)
+            << "agent " << id << " of kind " << id % 2;
         // Within its clip's pace: at least minWalkRate of it (the long
         // stride's natural 1.1 m/s makes 0.7 to 0.8 m/s a slow walk of it).
         const float natural = stride / kind.walkCycleSeconds;
-        const float speed = walked / (float(kSteps) * settings.timeStep);
+        const float speed = distance / (float(kSteps) * settings.timeStep);
         EXPECT_GE(speed, settings.minWalkRate * natural * 0.98f) << "agent " << id;
         EXPECT_LE(speed, settings.maxWalkRate * natural * 1.02f) << "agent " << id;
     }
