@@ -213,6 +213,10 @@ glm::vec3 SimulatedCrowd::standing(const glm::vec3& position) const {
     return {position.x, mGround->heightAt(position.x, position.z), position.z};
 }
 
+uint32_t SimulatedCrowd::creatureOf(uint32_t agent) const {
+    return mCrowd->settings().kindIndex(mCrowd->agents().id[agent]);
+}
+
 float SimulatedCrowd::agentScale(uint32_t agent, uint32_t creature) const {
     // An agent's stride grows with its radius (CrowdSettings::strideRadius),
     // so its creature does too.
@@ -229,13 +233,12 @@ glm::mat4 SimulatedCrowd::agentWorld(uint32_t agent, uint32_t creature) const {
 
 void SimulatedCrowd::updateInstances(const scene::Camera& camera, const CharacterLevels& levels) {
     const crowd::CrowdAgents& agents = mCrowd->agents();
-    const uint32_t creatures = uint32_t(mAssets.size());
     const uint32_t count = uint32_t(agents.id.size());
     mInstanced->begin(count);
     // Independent per agent: spread over the cores (65,000 agents a frame).
     core::parallelForRanges(count, 4096, mCrowd->settings().threads, [&](core::IndexRange range) {
         for (uint32_t i = range.begin; i < range.end; ++i) {
-            const uint32_t creature = agents.id[i] % creatures;
+            const uint32_t creature = creatureOf(i);
             const CreatureGait& gait = mGait.creatures[creature];
             const scene::Aabb& box = mAssets[creature].box;
             const float scale = agentScale(i, creature);
@@ -275,7 +278,6 @@ void SimulatedCrowd::update(double, const scene::Camera& camera, const Character
     const scene::Frustum frustum = camera.frustum();
     const crowd::CrowdAgents& agents = mCrowd->agents();
     const glm::vec3 eye = camera.position();
-    const uint32_t creatures = uint32_t(mAssets.size());
     // The crowd culls by tiles; each candidate's creature is then tested on
     // its own, with a box that holds it at any heading, so only agents really
     // in view compete for the drawn slots.
@@ -283,7 +285,7 @@ void SimulatedCrowd::update(double, const scene::Camera& camera, const Character
     mCrowd->cull(frustum, mCulled);
     mNearest.clear();
     for (uint32_t i : mCulled) {
-        const Reach& reach = mReach[agents.id[i] % creatures];
+        const Reach& reach = mReach[creatureOf(i)];
         const float size = agents.radius[i] / mGait.strideRadius;
         const glm::vec3 p = standing(agents.position[i]);
         const scene::Aabb box{p + size * glm::vec3(-reach.radius, reach.bottom, -reach.radius),
@@ -295,7 +297,7 @@ void SimulatedCrowd::update(double, const scene::Camera& camera, const Character
     std::partial_sort(mNearest.begin(), mNearest.begin() + ptrdiff_t(drawn), mNearest.end());
     for (size_t k = 0; k < drawn; ++k) {
         const uint32_t i = mNearest[k].second;
-        const uint32_t creature = agents.id[i] % creatures;
+        const uint32_t creature = creatureOf(i);
         const CreatureGait& gait = mGait.creatures[creature];
         const int clip = agents.clip[i] == crowd::AgentClip::Walk ? gait.walkClip : gait.idleClip;
         const float duration = clip >= 0 ? mAssets[creature].asset.clips[size_t(clip)].duration() : 0.0f;
@@ -307,13 +309,12 @@ void SimulatedCrowd::update(double, const scene::Camera& camera, const Character
 void SimulatedCrowd::shadowCasters(const glm::vec3& region, uint32_t limit, std::vector<glm::vec4>& out) {
     out.clear();
     const crowd::CrowdAgents& agents = mCrowd->agents();
-    const uint32_t creatures = uint32_t(mAssets.size());
     for (uint32_t i = 0; i < agents.position.size(); ++i) {
         const glm::vec3& p = agents.position[i];
         if (!insideRegion(region, p)) continue;
         // As tall as it is drawn: a creature of another build mixed in
         // (--model) casts its own size, not the crowd's mean.
-        const uint32_t creature = agents.id[i] % creatures;
+        const uint32_t creature = creatureOf(i);
         out.emplace_back(p, mGait.creatures[creature].height * agentScale(i, creature));
     }
     keepNearest(region, limit, out);

@@ -24,10 +24,7 @@ struct AgentGait {
     /// The gait of the agent with id `id` (its kind, CrowdSettings::kindOf)
     /// and `radius` (strides scale with the radius).
     static AgentGait of(const CrowdSettings& settings, uint32_t id, float radius) {
-        return of(settings, settings.kindOf(id), radius);
-    }
-    /// The gait of an agent of kind `kind` and `radius`.
-    static AgentGait of(const CrowdSettings& settings, const WalkerKind& kind, float radius) {
+        const WalkerKind kind = settings.kindOf(id);
         AgentGait gait;
         gait.stride = kind.walkStrideLength * radius / settings.strideRadius;
         gait.walkCycle = kind.walkCycleSeconds;

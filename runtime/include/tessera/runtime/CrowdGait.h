@@ -6,7 +6,7 @@
 /// whatever the units of its file; each then walks its own stride, its walk
 /// clip's ground per cycle (character::measureStride) at that size, as one
 /// kind of walker of the crowd (crowd::WalkerKind, in creature order, so an
-/// agent's kind is its creature: id % creatures).
+/// agent's kind, CrowdSettings::kindIndex, is its creature).
 
 #include "tessera/runtime/CharacterAssets.h"
 #include "tessera/core/Result.h"

@@ -102,6 +102,9 @@ private:
     /// Where an agent at `position` (on the height field) is drawn standing:
     /// its (x, z) on the drawn ground.
     glm::vec3 standing(const glm::vec3& position) const;
+    /// The creature agent `agent` is drawn as: its kind of walker
+    /// (CrowdGait::apply gives the crowd one kind per creature, in order).
+    uint32_t creatureOf(uint32_t agent) const;
     /// The draw scale of agent `agent` as creature `creature`.
     float agentScale(uint32_t agent, uint32_t creature) const;
     glm::mat4 agentWorld(uint32_t agent, uint32_t creature) const;

@@ -109,10 +109,13 @@ struct CrowdSettings {
     /// empty (the default).
     std::vector<WalkerKind> kinds;
 
+    /// The kind of the agent with id `id`: its index in `kinds` (0 while
+    /// `kinds` is empty). A host drawing one model per kind picks the model
+    /// by it.
+    uint32_t kindIndex(uint32_t id) const { return kinds.empty() ? 0u : id % uint32_t(kinds.size()); }
     /// The gait of the agent with id `id`: its kind's, or the one above.
     WalkerKind kindOf(uint32_t id) const {
-        return kinds.empty() ? WalkerKind{walkStrideLength, walkCycleSeconds, idleCycleSeconds}
-                             : kinds[id % kinds.size()];
+        return kinds.empty() ? WalkerKind{walkStrideLength, walkCycleSeconds, idleCycleSeconds} : kinds[kindIndex(id)];
     }
 
     // --- Progress -----------------------------------------------------------
