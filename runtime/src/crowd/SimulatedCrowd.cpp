@@ -179,13 +179,23 @@ std::string SimulatedCrowd::drawingMode(const std::string& backend, bool gpu, co
                       : "crowd: none drawn (" + reporter.name(setting::kAgentsDrawn) + " 0)";
 }
 
-void SimulatedCrowd::step() {
+void SimulatedCrowd::runStep() {
     {
         TESSERA_CPU_SCOPE("crowd.step");
         mCrowd->step();
     }
     mStepMs += mCrowd->lastTimings().total();
+}
+
+void SimulatedCrowd::step() {
+    if (mAhead) {
+        mStepper.wait();
+        mAhead = false;
+    } else {
+        runStep();
+    }
     const crowd::CrowdStats& s = mCrowd->stats();
+    mShown = {s, mCrowd->stepCount(), mCrowd->time(), mStepMs};
     auto& profiler = profiler::Profiler::global();
     const uint64_t frame = profiler.currentFrame(), now = profiler.nowNs();
     profiler.recordCounter({"crowd agents", frame, now, double(s.agents)});
@@ -195,14 +205,14 @@ void SimulatedCrowd::step() {
 }
 
 std::string SimulatedCrowd::summary() const {
-    const crowd::CrowdStats& s = mCrowd->stats();
-    const uint64_t steps = mCrowd->stepCount();
+    const crowd::CrowdStats& s = mShown.stats;
+    const uint64_t steps = mShown.steps;
     char text[256];
     std::snprintf(text, sizeof text,
                   "crowd: %llu steps (%.1f s), %u agents: %u walking, %u fleeing, %u stuck, %llu arrivals; a step "
                   "took %.2f ms on average",
-                  static_cast<unsigned long long>(steps), mCrowd->time(), s.agents, s.walking, s.fleeing, s.stuck,
-                  static_cast<unsigned long long>(s.arrivals), steps ? mStepMs / double(steps) : 0.0);
+                  static_cast<unsigned long long>(steps), mShown.seconds, s.agents, s.walking, s.fleeing, s.stuck,
+                  static_cast<unsigned long long>(s.arrivals), steps ? mShown.stepMs / double(steps) : 0.0);
     return text;
 }
 
@@ -261,6 +271,13 @@ void SimulatedCrowd::updateInstances(const scene::Camera& camera, const Characte
             mInstanced->set(i, instance);
         }
     });
+    // The frame is drawn from the instances from here on: the next step
+    // runs beside the LOD selection and the drawing (it reads the terrain,
+    // as the selection's horizon does; nothing here writes it).
+    if (mStepAhead) {
+        mAhead = true;
+        mStepper.run([this] { runStep(); });
+    }
     lod::LodPolicy policy = levels.lod;
     policy.fixedLevel = levels.fixedLevel.value_or(0.0f);
     mInstanced->setHorizon(*mTerrain);
@@ -308,7 +325,16 @@ void SimulatedCrowd::update(double, const scene::Camera& camera, const Character
 
 void SimulatedCrowd::shadowCasters(const glm::vec3& region, uint32_t limit, std::vector<glm::vec4>& out) {
     out.clear();
-    const crowd::CrowdAgents& agents = mCrowd->agents();
+    if (mInstancedActive) {
+        // From the frame's instances: the agents may be a step further on.
+        for (const shader::CrowdInstance& instance : mInstanced->instances()) {
+            const glm::vec3 feet(instance.placement);
+            if (insideRegion(region, feet))
+                out.emplace_back(feet, mGait.creatures[instance.ids.y].height * instance.animation.y);
+        }
+        return keepNearest(region, limit, out);
+    }
+    const crowd::CrowdAgents& agents = crowd().agents();
     for (uint32_t i = 0; i < agents.position.size(); ++i) {
         const glm::vec3& p = agents.position[i];
         if (!insideRegion(region, p)) continue;

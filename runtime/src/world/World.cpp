@@ -127,9 +127,16 @@ scene::CameraPose World::cameraPose(uint32_t frame) const {
 
 void World::update(uint32_t frame) {
     const double now = double(frame) * kSecondsPerFrame;
+    // A step running ahead reads the terrain: it ends before a crater lands.
+    if (mSimulated) mSimulated->finishStepAhead();
     while (mNextImpact < mImpacts.size() && mImpacts[mNextImpact].timeSeconds <= now)
         mTerrain->splat(mImpacts[mNextImpact++].splat);
     if (mSimulated) mSimulated->step();
+}
+
+void World::dropMeteor(const terrain::CraterSplat& splat) {
+    if (mSimulated) mSimulated->finishStepAhead();
+    mTerrain->splat(splat);
 }
 
 } // namespace tessera::runtime

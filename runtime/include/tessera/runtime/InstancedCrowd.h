@@ -16,6 +16,7 @@
 #include "tessera/terrain/Terrain.h"
 
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace tessera::runtime {
@@ -65,6 +66,8 @@ public:
     /// file when it cannot.
     Status writeTiers(const std::string& path, const std::string& backend, const backend::CrowdTiers& gpu) const;
     size_t instanceCount() const { return mInstances.size(); }
+    /// This frame's instances, as set().
+    std::span<const shader::CrowdInstance> instances() const { return mInstances; }
     /// This frame's instances standing in `region` (x, y: min corner XZ, z:
     /// side) as shadow casters: feet (xyz) and height (w, from the asset's
     /// box and the instance's scale), metres (CharacterPopulation::shadowCasters).

@@ -12,6 +12,7 @@
 #include "tessera/runtime/CharacterPoser.h"
 #include "tessera/runtime/CrowdGait.h"
 #include "tessera/runtime/Options.h"
+#include "tessera/core/BackgroundWorker.h"
 #include "tessera/core/Result.h"
 #include "tessera/crowd/Crowd.h"
 #include "tessera/scene/CameraPath.h"
@@ -45,13 +46,30 @@ public:
     static Result<std::unique_ptr<SimulatedCrowd>> create(const Options& options, const terrain::Terrain& terrain,
                                                           const terrain::DrawnSurface& ground);
 
-    /// One simulation step (crowd::Crowd::step, the demo's 1/30 s), traced as
-    /// "crowd.step", and the trace's crowd counters.
+    /// Brings the crowd to the next frame's state, one simulation step
+    /// (crowd::Crowd::step, the demo's 1/30 s, traced as "crowd.step") on:
+    /// the step that ran ahead while the last frame was drawn (update()
+    /// starts it once the frame's instances are built), or one now. Records
+    /// the trace's crowd counters and what summary() reports.
     void step();
-    const crowd::Crowd& crowd() const { return *mCrowd; }
+    /// Waits for a step running ahead. Call it before changing what a step
+    /// reads (a crater on the terrain): World::update does, before its
+    /// splats, so a crater reaches the crowd one step after it lands.
+    void finishStepAhead() { mStepper.wait(); }
+    /// Whether update() starts the next step while the frame is drawn
+    /// (default true; only the instanced crowd does: its frame is drawn from
+    /// the instances, not the agents).
+    void setStepAhead(bool ahead) { mStepAhead = ahead; }
+    /// The simulation, once any step running ahead has finished: then one
+    /// step past the frame drawn.
+    const crowd::Crowd& crowd() const {
+        mStepper.wait();
+        return *mCrowd;
+    }
     const crowd::CrowdLayout& layout() const { return mLayout; }
-    /// What the run did, in one line: steps, agents walking, fleeing and
-    /// stuck, arrivals, mean step time.
+    /// What the run showed, in one line: steps, agents walking, fleeing and
+    /// stuck, arrivals, mean step time (as of the last step() call, not the
+    /// step running ahead).
     std::string summary() const;
     /// How the crowd is drawn on `backend` (`gpu`: one that needs a GPU), in
     /// one line naming settings as `reporter` does.
@@ -64,9 +82,10 @@ public:
     void update(double seconds, const scene::Camera& camera, const CharacterLevels& levels) override;
     InstancedCrowd* instancedCrowd() override { return mInstanced.get(); }
     void useInstancedCrowd(bool instanced) override { mInstancedActive = instanced && mInstanced != nullptr; }
-    uint32_t instanceCapacity() const override { return mCrowd->stats().agents; }
+    uint32_t instanceCapacity() const override { return crowd().stats().agents; }
     /// Every agent in `region`, drawn instanced or not, as tall as it is
-    /// drawn (its creature's rest height at the agent's scale).
+    /// drawn (its creature's rest height at the agent's scale); instanced,
+    /// from the frame's instances, which the step running ahead leaves alone.
     void shadowCasters(const glm::vec3& region, uint32_t limit, std::vector<glm::vec4>& out) override;
     std::span<const backend::CharacterDrawItem> items() const override { return mPoser.items(); }
     /// Circling the spawn's centre (--orbit-distance, default 30 m), high
@@ -108,8 +127,12 @@ private:
     /// The draw scale of agent `agent` as creature `creature`.
     float agentScale(uint32_t agent, uint32_t creature) const;
     glm::mat4 agentWorld(uint32_t agent, uint32_t creature) const;
-    /// Every agent as an instance of the instanced crowd, and its LOD selection.
+    /// Every agent as an instance of the instanced crowd, then the next step
+    /// started ahead (mStepAhead) and the LOD selection beside it.
     void updateInstances(const scene::Camera& camera, const CharacterLevels& levels);
+    /// One step of the simulation, its time added to mStepMs; on the calling
+    /// thread or mStepper's.
+    void runStep();
 
     const terrain::Terrain* mTerrain = nullptr;
     const terrain::DrawnSurface* mGround = nullptr;
@@ -124,7 +147,18 @@ private:
     CameraOrbit mOrbit;
     std::optional<scene::CameraPath> mFlight; ///< unless --orbit-distance
     uint32_t mDrawCount = 0;
-    double mStepMs = 0.0; ///< summed over every step
+    double mStepMs = 0.0; ///< summed over every step, by runStep
+    /// What step() last brought the frame to (summary() reports it).
+    struct Shown {
+        crowd::CrowdStats stats;
+        uint64_t steps = 0;
+        double seconds = 0.0, stepMs = 0.0;
+    } mShown;
+    bool mStepAhead = true;
+    bool mAhead = false; ///< a step was started on mStepper and step() has not taken it
+    /// Last member: destroyed first, so a step in flight ends before the
+    /// crowd it steps goes.
+    mutable core::BackgroundWorker mStepper;
     std::vector<uint32_t> mCulled;
     std::vector<std::pair<float, uint32_t>> mNearest; ///< squared distance, agent
 };

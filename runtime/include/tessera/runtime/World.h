@@ -57,8 +57,10 @@ public:
     /// in the characters and crowd scenes, a slow circle around them).
     scene::CameraPose cameraPose(uint32_t frame) const;
     /// Lands every impact due by `frame` on the terrain's CPU copy (the
-    /// renderer takes them as pending splats for the GPU copy), then steps
-    /// the crowd once, which sees the new craters.
+    /// renderer takes them as pending splats for the GPU copy), then brings
+    /// the crowd a step on (SimulatedCrowd::step: the step that ran ahead
+    /// while the last frame was drawn, waited for before the craters land,
+    /// so the crowd sees them from its next step).
     void update(uint32_t frame);
     /// Fixes the camera at `pose` from now on (as --camera does).
     void fixCamera(const scene::CameraPose& pose) { mFixedPose = pose; }
@@ -66,7 +68,7 @@ public:
     void releaseCamera() { mFixedPose.reset(); }
     /// Lands a crater now (the window's meteor control): the CPU height
     /// field at once, the GPU copy with the next frame, the crowd's next step.
-    void dropMeteor(const terrain::CraterSplat& splat) { mTerrain->splat(splat); }
+    void dropMeteor(const terrain::CraterSplat& splat);
     uint32_t impactsLanded() const { return mNextImpact; }
 
 private:
