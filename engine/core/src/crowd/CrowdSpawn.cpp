@@ -7,7 +7,7 @@
 
 #include <cmath>
 #include <numbers>
-#include <unordered_map>
+#include <vector>
 
 namespace tessera::crowd {
 namespace {
@@ -16,16 +16,26 @@ namespace {
 constexpr uint32_t kSpawnAttempts = 200;
 
 // Placed agents by square cell of the largest diameter, to test overlap.
+// A flat hash of the occupied cells (open addressing, linear probing) to the
+// last agent placed in each, and per agent the one placed before it in its
+// cell: no allocation per agent or cell, where a map of vectors made a
+// million-agent spawn allocation-bound (a second of the creation, serial).
 class PlacementGrid {
 public:
-    explicit PlacementGrid(float cell) : mCell(cell) {}
+    PlacementGrid(float cell, size_t agents) : mCell(cell) {
+        size_t capacity = 64;
+        while (capacity < 2 * agents) capacity *= 2;
+        mKeys.assign(capacity, kEmpty);
+        mHeads.resize(capacity);
+        mNext.reserve(agents);
+    }
     bool free(glm::vec2 p, float r, const CrowdAgents& agents) const {
         const int64_t cx = cellOf(p.x), cz = cellOf(p.y);
         for (int64_t z = cz - 1; z <= cz + 1; ++z)
             for (int64_t x = cx - 1; x <= cx + 1; ++x) {
-                const auto it = mCells.find(key(x, z));
-                if (it == mCells.end()) continue;
-                for (uint32_t a : it->second) {
+                const size_t slot = find(key(x, z));
+                if (mKeys[slot] == kEmpty) continue;
+                for (uint32_t a = mHeads[slot]; a != kNone; a = mNext[a]) {
                     const glm::vec2 q(agents.position[a].x, agents.position[a].z);
                     const float reach = r + agents.radius[a];
                     if (glm::dot(p - q, p - q) < reach * reach) return false;
@@ -33,13 +43,33 @@ public:
             }
         return true;
     }
-    void add(glm::vec2 p, uint32_t agent) { mCells[key(cellOf(p.x), cellOf(p.y))].push_back(agent); }
+    /// Agents are added in index order 0, 1, 2, ...
+    void add(glm::vec2 p, uint32_t agent) {
+        const uint64_t k = key(cellOf(p.x), cellOf(p.y));
+        const size_t slot = find(k);
+        const bool fresh = mKeys[slot] == kEmpty;
+        mKeys[slot] = k;
+        mNext.push_back(fresh ? kNone : mHeads[slot]);
+        mHeads[slot] = agent;
+    }
 
 private:
+    static constexpr uint64_t kEmpty = ~uint64_t(0);
+    static constexpr uint32_t kNone = ~uint32_t(0);
     int64_t cellOf(float v) const { return int64_t(std::floor(v / mCell)); }
-    static uint64_t key(int64_t x, int64_t z) { return (uint64_t(x) << 32) ^ uint64_t(uint32_t(z)); }
+    // Cells are within +-2^31 of the origin, so the key is never kEmpty.
+    static uint64_t key(int64_t x, int64_t z) { return (uint64_t(uint32_t(x)) << 32) | uint64_t(uint32_t(z)); }
+    // The slot holding `k`, or the empty one where it would go.
+    size_t find(uint64_t k) const {
+        const size_t mask = mKeys.size() - 1;
+        size_t slot = size_t((k * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+        while (mKeys[slot] != kEmpty && mKeys[slot] != k) slot = (slot + 1) & mask;
+        return slot;
+    }
     float mCell;
-    std::unordered_map<uint64_t, std::vector<uint32_t>> mCells;
+    std::vector<uint64_t> mKeys;  ///< per slot: the cell's key, or kEmpty
+    std::vector<uint32_t> mHeads; ///< per slot: the last agent placed in the cell
+    std::vector<uint32_t> mNext;  ///< per agent: the agent placed before it in its cell, or kNone
 };
 
 } // namespace
@@ -58,7 +88,7 @@ Status Crowd::spawn(std::span<const SpawnPattern> spawns) {
     a.position.reserve(total), a.velocity.reserve(total), a.heading.reserve(total), a.radius.reserve(total);
     a.preferredSpeed.reserve(total), a.goalGroup.reserve(total), a.clip.reserve(total), a.phase.reserve(total);
     a.id.reserve(total);
-    PlacementGrid placed(2.0f * largest);
+    PlacementGrid placed(2.0f * largest, total);
     for (size_t k = 0; k < spawns.size(); ++k) {
         const SpawnPattern& spawn = spawns[k];
         Random random(spawn.seed, k);
