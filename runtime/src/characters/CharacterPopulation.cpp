@@ -10,7 +10,11 @@ void CharacterPopulation::shadowCasters(const glm::vec3& region, uint32_t limit,
     out.clear();
     // Drawn as an instanced crowd: its instances are the characters.
     if (InstancedCrowd* crowd = instancedCrowd(); crowd && items().empty()) {
-        crowd->shadowCasters(assets(), region, out);
+        // As tall as the asset's box (animated bounds).
+        const CharacterAssets& all = assets();
+        std::vector<float> heights(all.size());
+        for (size_t i = 0; i < all.size(); ++i) heights[i] = all[i].box.max.y - all[i].box.min.y;
+        crowd->shadowCasters(heights, region, out);
         keepNearest(region, limit, out);
         return;
     }

@@ -1,5 +1,7 @@
 #include "tessera/runtime/InstancedCrowd.h"
 
+#include "world/ShadowCasters.h"
+
 #include "tessera/core/JsonWriter.h"
 #include "tessera/profiler/CpuScope.h"
 
@@ -189,15 +191,12 @@ Status InstancedCrowd::writeTiers(const std::string& path, const std::string& ba
     return {};
 }
 
-void InstancedCrowd::shadowCasters(const CharacterAssets& assets, const glm::vec3& region,
+void InstancedCrowd::shadowCasters(std::span<const float> heights, const glm::vec3& region,
                                    std::vector<glm::vec4>& out) const {
     for (const shader::CrowdInstance& instance : mInstances) {
         const glm::vec3 feet(instance.placement);
-        if (feet.x < region.x || feet.z < region.y || feet.x >= region.x + region.z || feet.z >= region.y + region.z)
-            continue;
-        if (instance.ids.y >= assets.size()) continue;
-        const scene::Aabb& box = assets[instance.ids.y].box;
-        out.emplace_back(feet, (box.max.y - box.min.y) * instance.animation.y);
+        if (instance.ids.y < heights.size() && insideRegion(region, feet))
+            out.emplace_back(feet, heights[instance.ids.y] * instance.animation.y);
     }
 }
 

@@ -90,6 +90,7 @@ Result<std::unique_ptr<SimulatedCrowd>> SimulatedCrowd::create(const Options& op
     auto gait = measureCrowdGait(self->mAssets, kCreatureHeight, kStrideRadius);
     if (!gait) return gait.error();
     self->mGait = std::move(gait.value());
+    for (const CreatureGait& c : self->mGait.creatures) self->mRestHeights.push_back(c.height);
     log::info(describeGait(self->mGait, self->mAssets));
 
     auto instanced = InstancedCrowd::create(self->mAssets);
@@ -327,11 +328,7 @@ void SimulatedCrowd::shadowCasters(const glm::vec3& region, uint32_t limit, std:
     out.clear();
     if (mInstancedActive) {
         // From the frame's instances: the agents may be a step further on.
-        for (const shader::CrowdInstance& instance : mInstanced->instances()) {
-            const glm::vec3 feet(instance.placement);
-            if (insideRegion(region, feet))
-                out.emplace_back(feet, mGait.creatures[instance.ids.y].height * instance.animation.y);
-        }
+        mInstanced->shadowCasters(mRestHeights, region, out);
         return keepNearest(region, limit, out);
     }
     const crowd::CrowdAgents& agents = crowd().agents();

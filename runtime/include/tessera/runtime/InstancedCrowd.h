@@ -69,9 +69,10 @@ public:
     /// This frame's instances, as set().
     std::span<const shader::CrowdInstance> instances() const { return mInstances; }
     /// This frame's instances standing in `region` (x, y: min corner XZ, z:
-    /// side) as shadow casters: feet (xyz) and height (w, from the asset's
-    /// box and the instance's scale), metres (CharacterPopulation::shadowCasters).
-    void shadowCasters(const CharacterAssets& assets, const glm::vec3& region, std::vector<glm::vec4>& out) const;
+    /// side) as shadow casters, appended to `out`: feet (xyz) and height (w:
+    /// `heights[creature]`, in the creature's model units, times the
+    /// instance's scale), metres (CharacterPopulation::shadowCasters).
+    void shadowCasters(std::span<const float> heights, const glm::vec3& region, std::vector<glm::vec4>& out) const;
 
 private:
     InstancedCrowd() = default;

@@ -140,6 +140,7 @@ private:
     CharacterPoser mPoser;
     CrowdGait mGait;
     std::vector<Reach> mReach;
+    std::vector<float> mRestHeights; ///< per creature: its rest-pose height (CreatureGait::height)
     crowd::CrowdLayout mLayout;
     std::unique_ptr<crowd::Crowd> mCrowd;
     std::unique_ptr<InstancedCrowd> mInstanced;
