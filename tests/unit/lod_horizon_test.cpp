@@ -166,3 +166,63 @@ TEST(LodHorizon, TheManagerLeavesHiddenInstancesOutOfEveryTier) {
     EXPECT_EQ(shader::tsLodStateTier(manager.state(1)), TS_LOD_NONE);
     EXPECT_EQ(frame.inView, 1u);
 }
+
+// A group of spheres that lie together is proven at once where the grid's
+// bounds decide (none hidden, or all blocked at one stretch of their sight
+// lines): each sphere must still get the shared rule's answer, and the
+// proofs must decide most groups on ground like a crowd's.
+TEST(LodHorizon, AGroupProofGivesEachSphereTheSharedRulesAnswer) {
+    std::mt19937 random(41);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    uint32_t groups = 0, noneHidden = 0, blocked = 0, hiddenCount = 0, visibleCount = 0;
+    for (const uint32_t n : {1u, 7u, 16u, 128u}) {
+        for (int grid = 0; grid < 10; ++grid) {
+            const float cell = 2.0f + 60.0f * unit(random);
+            const float side = cell * float(n);
+            std::vector<float> lowest(size_t(n) * n);
+            for (uint32_t j = 0; j < n; ++j)
+                for (uint32_t i = 0; i < n; ++i)
+                    lowest[size_t(j) * n + i] = 20.0f * std::sin(0.3f * float(i) + float(grid)) * std::cos(0.2f * float(j)) +
+                                                (unit(random) < 0.05f ? 40.0f * unit(random) : 0.0f);
+            lod::HorizonPyramid pyramid;
+            pyramid.build(lowest.data(), n);
+            shader::CrowdLodParams p{};
+            p.occluder = glm::vec4(-0.1f * side, -0.2f * side, cell, float(n));
+            for (int view = 0; view < 8; ++view) {
+                p.eye = glm::vec4(side * (1.4f * unit(random) - 0.3f), 60.0f * unit(random) - 10.0f,
+                                  side * (1.4f * unit(random) - 0.3f), 800.0f);
+                for (int g = 0; g < 60; ++g) {
+                    // 32 spheres within a few metres to a cell of each other.
+                    const float spread = (unit(random) < 0.5f ? 4.0f : cell) * unit(random);
+                    const glm::vec3 centre(side * (1.4f * unit(random) - 0.3f), 50.0f * unit(random) - 25.0f,
+                                           side * (1.4f * unit(random) - 0.3f));
+                    std::vector<glm::vec4> spheres;
+                    lod::SphereBounds bounds;
+                    for (int k = 0; k < 32; ++k) {
+                        spheres.emplace_back(centre + spread * glm::vec3(unit(random) - 0.5f, 0.2f * unit(random),
+                                                                          unit(random) - 0.5f),
+                                             0.2f + 2.0f * unit(random));
+                        bounds.add(spheres.back());
+                    }
+                    const lod::GroupSight proof = pyramid.proveGroup(bounds, p);
+                    ++groups;
+                    noneHidden += proof.verdict == lod::GroupSight::Verdict::NoneHidden;
+                    blocked += proof.verdict == lod::GroupSight::Verdict::Blocked;
+                    for (size_t k = 0; k < spheres.size(); ++k) {
+                        const bool expected = shader::tsLodBehindTerrain(spheres[k], p, lowest.data());
+                        ASSERT_EQ(pyramid.behindTerrain(spheres[k], p, proof), expected)
+                            << "n " << n << " grid " << grid << " view " << view << " group " << g << " sphere " << k
+                            << " verdict " << int(proof.verdict);
+                        (expected ? hiddenCount : visibleCount)++;
+                    }
+                }
+            }
+        }
+    }
+    std::cout << "[lod horizon] groups: " << groups << ", proven none hidden " << noneHidden << ", blocked " << blocked
+              << "; spheres " << hiddenCount << " hidden, " << visibleCount << " not\n";
+    EXPECT_GT(noneHidden, groups / 4);
+    EXPECT_GT(blocked, groups / 20);
+    EXPECT_GT(hiddenCount, 2000u);
+    EXPECT_GT(visibleCount, 2000u);
+}

@@ -8,6 +8,18 @@ namespace {
 
 // Points bounded together: a bound costs about two points.
 constexpr uint32_t kRun = 8;
+// Room for the float rounding of the shared test's points (metres; its
+// coordinates are at most a few kilometres, where a float's step is a
+// millimetre), which a group's bounds, worked out in double, do not share.
+constexpr double kSlack = 0.05;
+// The fraction of the way a point is set at, give or take its rounding.
+constexpr double kSlackT = 1e-4;
+// A test point's cross-section (tsLodSight) has half side t d r / sqrt(d^2 -
+// r^2) <= t r / sqrt(1 - 1/4) for the spheres that get points at all (d >
+// 2 r + cell).
+constexpr double kSpread = 1.1548;
+// Halvings of a group's sight lines before the proof gives up (32 stretches).
+constexpr uint32_t kMaxDepth = 5;
 
 } // namespace
 
@@ -19,36 +31,57 @@ void HorizonPyramid::build(const float* occluders, uint32_t n) {
     size_t levels = 0;
     for (uint32_t side = n; side > 1; side = (side + 1) / 2) ++levels;
     mLevels.resize(levels);
+    mMinLevels.resize(levels);
     const float* below = occluders;
+    const float* belowMin = occluders;
     uint32_t side = n;
     for (size_t k = 0; k < levels; ++k) {
         const uint32_t up = (side + 1) / 2;
         std::vector<float>& level = mLevels[k];
+        std::vector<float>& levelMin = mMinLevels[k];
         level.resize(size_t(up) * up);
+        levelMin.resize(size_t(up) * up);
         for (uint32_t j = 0; j < up; ++j)
             for (uint32_t i = 0; i < up; ++i) {
                 const uint32_t i1 = std::min(2 * i + 1, side - 1), j1 = std::min(2 * j + 1, side - 1);
-                level[size_t(j) * up + i] =
-                    std::max(std::max(below[size_t(2 * j) * side + 2 * i], below[size_t(2 * j) * side + i1]),
-                             std::max(below[size_t(j1) * side + 2 * i], below[size_t(j1) * side + i1]));
+                const size_t a = size_t(2 * j) * side + 2 * i, b = size_t(2 * j) * side + i1;
+                const size_t c = size_t(j1) * side + 2 * i, d = size_t(j1) * side + i1;
+                level[size_t(j) * up + i] = std::max(std::max(below[a], below[b]), std::max(below[c], below[d]));
+                levelMin[size_t(j) * up + i] =
+                    std::min(std::min(belowMin[a], belowMin[b]), std::min(belowMin[c], belowMin[d]));
             }
         mSides.push_back(up);
         below = level.data();
+        belowMin = levelMin.data();
         side = up;
     }
 }
 
-float HorizonPyramid::highest(int32_t i0, int32_t j0, int32_t i1, int32_t j1) const {
-    // The finest level where the rectangle spans at most two blocks a side.
+namespace {
+
+// The extreme of the cells in [i0, i1] x [j0, j1] at the finest level where
+// the rectangle spans at most two blocks a side.
+template <class Pick>
+float pickCells(const float* grid, const std::vector<std::vector<float>>& levels, const std::vector<uint32_t>& sides,
+                int32_t i0, int32_t j0, int32_t i1, int32_t j1, Pick pick) {
     uint32_t k = 0;
     while ((i1 >> k) - (i0 >> k) > 1 || (j1 >> k) - (j0 >> k) > 1) ++k;
-    k = std::min<uint32_t>(k, uint32_t(mSides.size()) - 1);
-    const float* cells = k == 0 ? mGrid : mLevels[k - 1].data();
-    const int32_t side = int32_t(mSides[k]);
+    k = std::min<uint32_t>(k, uint32_t(sides.size()) - 1);
+    const float* cells = k == 0 ? grid : levels[k - 1].data();
+    const int32_t side = int32_t(sides[k]);
     const int32_t a = std::min(i0 >> k, side - 1), b = std::min(i1 >> k, side - 1);
     const int32_t c = std::min(j0 >> k, side - 1), e = std::min(j1 >> k, side - 1);
-    return std::max(std::max(cells[c * side + a], cells[c * side + b]),
-                    std::max(cells[e * side + a], cells[e * side + b]));
+    return pick(pick(cells[c * side + a], cells[c * side + b]), pick(cells[e * side + a], cells[e * side + b]));
+}
+
+} // namespace
+
+float HorizonPyramid::highest(int32_t i0, int32_t j0, int32_t i1, int32_t j1) const {
+    return pickCells(mGrid, mLevels, mSides, i0, j0, i1, j1, [](float a, float b) { return std::max(a, b); });
+}
+
+float HorizonPyramid::lowest(int32_t i0, int32_t j0, int32_t i1, int32_t j1) const {
+    return pickCells(mGrid, mMinLevels, mSides, i0, j0, i1, j1, [](float a, float b) { return std::min(a, b); });
 }
 
 bool HorizonPyramid::runMayBeBlocked(uint32_t first, uint32_t last, uint32_t steps, const glm::vec4& delta,
@@ -88,6 +121,98 @@ bool HorizonPyramid::behindTerrain(const glm::vec4& sphere, const shader::CrowdL
             if (shader::tsLodSightBlockedAt(s, steps, delta, cone, p, mGrid)) return true;
     }
     return false;
+}
+
+HorizonPyramid::Stretch HorizonPyramid::stretch(const SphereBounds& bounds, const shader::CrowdLodParams& p,
+                                                double ta, double tb) const {
+    // A point at fraction t towards a centre c is eye + t (c - eye): bilinear
+    // in t and c, so its extremes over the stretch and the box are at their
+    // corners.
+    const double cell = p.occluder.z;
+    auto range = [&](double eye, double lo, double hi, double origin, double& low, double& high) {
+        low = high = eye + ta * (lo - eye) - origin;
+        for (double t : {ta, tb})
+            for (double c : {lo, hi}) {
+                const double v = eye + t * (c - eye) - origin;
+                low = std::min(low, v);
+                high = std::max(high, v);
+            }
+    };
+    double x0, x1, z0, z1, y0, y1;
+    range(p.eye.x, bounds.lo.x, bounds.hi.x, p.occluder.x, x0, x1);
+    range(p.eye.z, bounds.lo.z, bounds.hi.z, p.occluder.y, z0, z1);
+    range(p.eye.y, bounds.lo.y, bounds.hi.y, 0.0, y0, y1);
+    Stretch s;
+    s.rho = tb * kSpread * double(bounds.radius) + kSlack;
+    // Cells as floor() gives them, far enough out that int32 holds them.
+    auto index = [cell](double v) { return int32_t(std::clamp(std::floor(v / cell), -1e6, 1e6)); };
+    s.i0 = index(x0 - s.rho);
+    s.i1 = index(x1 + s.rho);
+    s.j0 = index(z0 - s.rho);
+    s.j1 = index(z1 + s.rho);
+    s.yLow = y0 - kSlack;
+    s.yHigh = y1 + kSlack;
+    return s;
+}
+
+bool HorizonPyramid::noneBlocked(const SphereBounds& bounds, const shader::CrowdLodParams& p, double ta, double tb,
+                                 uint32_t depth) const {
+    const Stretch s = stretch(bounds, p, ta, tb);
+    const int32_t n = int32_t(mSide);
+    // A point reads cells only with all four inside the grid.
+    if (s.i1 < 0 || s.j1 < 0 || s.i0 >= n || s.j0 >= n) return true;
+    const auto clampCell = [n](int32_t v) { return std::clamp(v, 0, n - 1); };
+    // A point is blocked only below one of its cells (rho >= 0).
+    const double bound = highest(clampCell(s.i0), clampCell(s.j0), clampCell(s.i1), clampCell(s.j1));
+    if (s.yLow + TS_LOD_OCCLUSION_MARGIN >= bound) return true;
+    if (depth == kMaxDepth) return false;
+    const double mid = 0.5 * (ta + tb);
+    return noneBlocked(bounds, p, ta, mid, depth + 1) && noneBlocked(bounds, p, mid, tb, depth + 1);
+}
+
+GroupSight HorizonPyramid::proveGroup(const SphereBounds& bounds, const shader::CrowdLodParams& p) const {
+    GroupSight sight;
+    if (uint32_t(p.occluder.w) == 0u || mGrid == nullptr || noneBlocked(bounds, p, 0.0, 1.0, 0)) {
+        sight.verdict = GroupSight::Verdict::NoneHidden;
+        return sight;
+    }
+    // A stretch where every point of every sight line passes below the
+    // lowest cell it could read, its cross-section narrower than a cell and
+    // all of it over the grid. The longest first: more spheres have a test
+    // point within it.
+    const int32_t n = int32_t(mSide);
+    const double cell = p.occluder.z;
+    for (uint32_t stretches = 4; stretches <= (1u << kMaxDepth); stretches *= 2)
+        for (uint32_t k = 0; k < stretches; ++k) {
+            const double ta = double(k) / stretches, tb = double(k + 1) / stretches;
+            const Stretch s = stretch(bounds, p, ta, tb);
+            if (s.i0 < 0 || s.j0 < 0 || s.i1 >= n || s.j1 >= n || 2.0 * s.rho >= cell) continue;
+            if (s.yHigh + s.rho + TS_LOD_OCCLUSION_MARGIN < lowest(s.i0, s.j0, s.i1, s.j1)) {
+                sight.verdict = GroupSight::Verdict::Blocked;
+                sight.from = float(ta);
+                sight.to = float(tb);
+                return sight;
+            }
+        }
+    return sight;
+}
+
+bool HorizonPyramid::behindTerrain(const glm::vec4& sphere, const shader::CrowdLodParams& p,
+                                   const GroupSight& group) const {
+    if (group.verdict == GroupSight::Verdict::NoneHidden) return false;
+    if (group.verdict == GroupSight::Verdict::Blocked) {
+        glm::vec4 delta;
+        glm::vec2 cone;
+        const uint32_t steps = shader::tsLodSight(sphere, p, delta, cone);
+        if (steps == 0u) return false;
+        // The test's points lie at t = reach s / (steps + 1): one inside the
+        // stretch is blocked, and so the sphere hidden.
+        const double per = double(cone.y) / double(steps + 1u);
+        const double first = std::max(1.0, std::ceil((double(group.from) + kSlackT) / per));
+        const double last = std::min(double(steps), std::floor((double(group.to) - kSlackT) / per));
+        if (first <= last) return true;
+    }
+    return behindTerrain(sphere, p);
 }
 
 } // namespace tessera::lod

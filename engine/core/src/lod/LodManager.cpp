@@ -15,6 +15,9 @@ namespace {
 using detail::AdmissionItem;
 
 constexpr uint32_t kGrain = 4096;
+// Instances whose horizon is proven together (HorizonPyramid::proveGroup).
+constexpr uint32_t kHorizonGroup = 32;
+
 
 bool continuesFadeFrom(uint32_t state, uint32_t tier) {
     // A fade with two or more frames left still draws the copy after this
@@ -147,23 +150,33 @@ void LodManager::classify(std::span<const LodInstance> instances) {
     core::parallelForRanges(count, kGrain, mThreads, [&](core::IndexRange range) {
         std::vector<uint32_t>& budgeted = mChunkBudgeted[range.begin / kGrain];
         budgeted.clear();
-        for (uint32_t i = range.begin; i < range.end; ++i) {
-            const LodInstance& instance = instances[i];
-            Seen& seen = mSeen[i];
-            seen.tier = TS_LOD_NONE;
-            seen.hidden = TS_LOD_NONE;
-            if (!shader::tsLodInFrustum(instance.sphere, p)) {
-                seen.candidate = TS_LOD_NONE;
-                continue;
+        for (uint32_t group = range.begin; group < range.end; group += kHorizonGroup) {
+            const uint32_t end = std::min(group + kHorizonGroup, range.end);
+            // The group's spheres in view and their bounds: a crowd's agents
+            // come in memory order, which keeps neighbours together, so the
+            // horizon is often proven for the whole group at once.
+            SphereBounds sight;
+            for (uint32_t i = group; i < end; ++i) {
+                Seen& seen = mSeen[i];
+                seen.tier = TS_LOD_NONE;
+                seen.hidden = TS_LOD_NONE;
+                seen.candidate = shader::tsLodInFrustum(instances[i].sphere, p) ? TS_LOD_IMPOSTOR : TS_LOD_NONE;
+                if (seen.candidate != TS_LOD_NONE) sight.add(instances[i].sphere);
             }
-            const uint32_t state = mSlotState[i];
-            seen.pixels = shader::tsLodPixels(instance.sphere, p);
-            seen.candidate = shader::tsLodCandidate(seen.pixels, shader::tsLodStateTier(state), p);
-            if (mHorizon.behindTerrain(instance.sphere, p)) {
-                seen.hidden = seen.candidate;
-                seen.candidate = TS_LOD_NONE;
-            } else if (meetsTheBudgets(seen.candidate, state)) {
-                budgeted.push_back(i);
+            const GroupSight proof = sight.count ? mHorizon.proveGroup(sight, p) : GroupSight{};
+            for (uint32_t i = group; i < end; ++i) {
+                Seen& seen = mSeen[i];
+                if (seen.candidate == TS_LOD_NONE) continue;
+                const LodInstance& instance = instances[i];
+                const uint32_t state = mSlotState[i];
+                seen.pixels = shader::tsLodPixels(instance.sphere, p);
+                seen.candidate = shader::tsLodCandidate(seen.pixels, shader::tsLodStateTier(state), p);
+                if (mHorizon.behindTerrain(instance.sphere, p, proof)) {
+                    seen.hidden = seen.candidate;
+                    seen.candidate = TS_LOD_NONE;
+                } else if (meetsTheBudgets(seen.candidate, state)) {
+                    budgeted.push_back(i);
+                }
             }
         }
     });

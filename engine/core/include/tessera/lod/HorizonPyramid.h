@@ -5,16 +5,49 @@
 /// the cells a run of the test's points can read, and a run whose sight
 /// lines stay above that bound is skipped without reading its points. At a
 /// million agents the plain test was most of the LOD manager's frame (up to
-/// 64 points for each of 844,000 agents in view). See docs/CROWD.md 6.1.
+/// 64 points for each of 844,000 agents in view). A group of spheres that
+/// lie together (a crowd's agents in memory order) is also proven at once,
+/// where it can be: none of them hidden, or all of them hidden at one
+/// stretch of their sight lines (GroupSight). See docs/CROWD.md 6.1.
 
 #include "tessera/shaders/CrowdLod.h"
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
 namespace tessera::lod {
+
+/// What the tests of a group of spheres are sure to answer, from the
+/// group's bounds alone (HorizonPyramid::proveGroup).
+struct GroupSight {
+    enum class Verdict : uint8_t {
+        Unknown,    ///< test each sphere
+        NoneHidden, ///< no sphere within the bounds is hidden
+        /// Every point of any sphere's sight line at a fraction of the way in
+        /// [from, to] is blocked: a sphere with a test point there is hidden.
+        Blocked,
+    };
+    Verdict verdict = Verdict::Unknown;
+    float from = 0.0f, to = 0.0f;
+};
+
+/// The bounds of a group of spheres: their centres' box and largest radius.
+struct SphereBounds {
+    glm::vec3 lo{0.0f}, hi{0.0f};
+    float radius = 0.0f;
+    uint32_t count = 0; ///< spheres added
+    /// Grows the bounds to hold `sphere` (xyz centre, w radius).
+    void add(const glm::vec4& sphere) {
+        const glm::vec3 c(sphere);
+        lo = count ? glm::min(lo, c) : c;
+        hi = count ? glm::max(hi, c) : c;
+        radius = count ? std::max(radius, sphere.w) : sphere.w;
+        ++count;
+    }
+};
 
 class HorizonPyramid {
 public:
@@ -24,6 +57,13 @@ public:
     /// Exactly shader::tsLodBehindTerrain(sphere, p, occluders) for the grid
     /// built (`p.occluder.w` must be its side).
     bool behindTerrain(const glm::vec4& sphere, const shader::CrowdLodParams& p) const;
+    /// What every sphere with its centre in `bounds.lo..hi` and a radius of
+    /// at most `bounds.radius` would get from behindTerrain, where the grid's
+    /// bounds alone decide it (with room for the test's float rounding).
+    GroupSight proveGroup(const SphereBounds& bounds, const shader::CrowdLodParams& p) const;
+    /// behindTerrain(sphere, p) for a sphere within the bounds `group` was
+    /// proven for: the same answer, from the proof where it decides.
+    bool behindTerrain(const glm::vec4& sphere, const shader::CrowdLodParams& p, const GroupSight& group) const;
 
 private:
     /// Whether some point in [first, last] may be blocked: false only when
@@ -33,11 +73,25 @@ private:
                          const glm::vec2& cone, const shader::CrowdLodParams& p) const;
     /// The highest cell in [i0, i1] x [j0, j1] (clamped to the grid, not empty).
     float highest(int32_t i0, int32_t j0, int32_t i1, int32_t j1) const;
+    /// The lowest cell in the same way (the min pyramid).
+    float lowest(int32_t i0, int32_t j0, int32_t i1, int32_t j1) const;
+    /// Where the sight lines of a group's spheres run over the fraction
+    /// [ta, tb] of their way: the grid cells (unclamped) their test points
+    /// could read and the lowest and highest of the points' heights.
+    struct Stretch {
+        int32_t i0, j0, i1, j1;
+        double yLow, yHigh, rho;
+    };
+    Stretch stretch(const SphereBounds& bounds, const shader::CrowdLodParams& p, double ta, double tb) const;
+    bool noneBlocked(const SphereBounds& bounds, const shader::CrowdLodParams& p, double ta, double tb,
+                     uint32_t depth) const;
 
     const float* mGrid = nullptr;
     uint32_t mSide = 0;
     /// Level k >= 1: the max of 2^k x 2^k cells; side ceil(n / 2^k).
     std::vector<std::vector<float>> mLevels;
+    /// The same levels with the min of each block.
+    std::vector<std::vector<float>> mMinLevels;
     std::vector<uint32_t> mSides;
 };
 
