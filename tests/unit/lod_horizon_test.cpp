@@ -10,6 +10,7 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <string>
 #include <vector>
 
 using namespace tessera;
@@ -48,6 +49,54 @@ bool lineBlocked(const Grid& grid, const glm::vec3& eye, const glm::vec3& target
         if (q.y < grid.lowestAt(q.x, q.z)) return true;
     }
     return false;
+}
+
+/// An n x n grid of lowest heights: smooth hills with sharp ridges now and
+/// then, and with `deepCells` some cells far below.
+std::vector<float> hills(uint32_t n, int grid, std::mt19937& random, bool deepCells) {
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::vector<float> lowest(size_t(n) * n);
+    for (uint32_t j = 0; j < n; ++j)
+        for (uint32_t i = 0; i < n; ++i) {
+            float h = 20.0f * std::sin(0.3f * float(i) + float(grid)) * std::cos(0.2f * float(j)) +
+                      (unit(random) < 0.05f ? 40.0f * unit(random) : 0.0f);
+            if (deepCells && unit(random) < 0.02f) h -= 100.0f;
+            lowest[size_t(j) * n + i] = h;
+        }
+    return lowest;
+}
+
+/// Parameters for such a grid of `cell`-metre cells, its origin off zero.
+shader::CrowdLodParams gridParams(uint32_t n, float cell) {
+    const float side = cell * float(n);
+    shader::CrowdLodParams p{};
+    p.occluder = glm::vec4(-0.1f * side, -0.2f * side, cell, float(n));
+    return p;
+}
+
+/// Runs `visit(pyramid, lowest, params, side, where)` on `grids` random
+/// grids of each side in `sizes` (cells 2 to 2 + `cellSpread` metres, hills
+/// as `hills` makes them), from 8 random eyes each, all from `random`.
+template <class Visit>
+void forEachView(std::mt19937& random, std::initializer_list<uint32_t> sizes, int grids, float cellSpread,
+                 bool deepCells, Visit visit) {
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (const uint32_t n : sizes)
+        for (int grid = 0; grid < grids; ++grid) {
+            const float cell = 2.0f + cellSpread * unit(random);
+            const float side = cell * float(n);
+            const std::vector<float> lowest = hills(n, grid, random, deepCells);
+            lod::HorizonPyramid pyramid;
+            pyramid.build(lowest.data(), n);
+            shader::CrowdLodParams p = gridParams(n, cell);
+            for (int view = 0; view < 8; ++view) {
+                p.eye = glm::vec4(side * (1.4f * unit(random) - 0.3f), 60.0f * unit(random) - 10.0f,
+                                  side * (1.4f * unit(random) - 0.3f), 800.0f);
+                visit(pyramid, lowest, p, side,
+                      "n " + std::to_string(n) + " grid " + std::to_string(grid) + " view " + std::to_string(view));
+                if (::testing::Test::HasFatalFailure()) return;
+            }
+        }
 }
 
 } // namespace
@@ -114,35 +163,17 @@ TEST(LodHorizon, ThePyramidGivesTheSharedRulesAnswer) {
     std::mt19937 random(23);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     uint32_t hiddenCount = 0, visibleCount = 0;
-    for (const uint32_t n : {1u, 2u, 7u, 16u, 37u, 128u}) {
-        for (int grid = 0; grid < 12; ++grid) {
-            const float cell = 2.0f + 30.0f * unit(random);
-            const float side = cell * float(n);
-            std::vector<float> lowest(size_t(n) * n);
-            // Smooth hills with sharp ridges now and then, some cells far below.
-            for (uint32_t j = 0; j < n; ++j)
-                for (uint32_t i = 0; i < n; ++i)
-                    lowest[size_t(j) * n + i] = 20.0f * std::sin(0.3f * float(i) + float(grid)) * std::cos(0.2f * float(j)) +
-                                                (unit(random) < 0.05f ? 40.0f * unit(random) : 0.0f) -
-                                                (unit(random) < 0.02f ? 100.0f : 0.0f);
-            lod::HorizonPyramid pyramid;
-            pyramid.build(lowest.data(), n);
-            shader::CrowdLodParams p{};
-            p.occluder = glm::vec4(-0.1f * side, -0.2f * side, cell, float(n));
-            for (int view = 0; view < 8; ++view) {
-                p.eye = glm::vec4(side * (1.4f * unit(random) - 0.3f), 60.0f * unit(random) - 10.0f,
-                                  side * (1.4f * unit(random) - 0.3f), 800.0f);
-                for (int k = 0; k < 400; ++k) {
-                    const glm::vec4 sphere(side * (1.4f * unit(random) - 0.3f), 50.0f * unit(random) - 25.0f,
-                                           side * (1.4f * unit(random) - 0.3f), 0.2f + 3.0f * unit(random));
-                    const bool expected = shader::tsLodBehindTerrain(sphere, p, lowest.data());
-                    ASSERT_EQ(pyramid.behindTerrain(sphere, p), expected)
-                        << "n " << n << " grid " << grid << " view " << view << " sphere " << k;
-                    (expected ? hiddenCount : visibleCount)++;
-                }
-            }
-        }
-    }
+    forEachView(random, {1u, 2u, 7u, 16u, 37u, 128u}, 12, 30.0f, true,
+                [&](const lod::HorizonPyramid& pyramid, const std::vector<float>& lowest,
+                    const shader::CrowdLodParams& p, float side, const std::string& where) {
+                    for (int k = 0; k < 400; ++k) {
+                        const glm::vec4 sphere(side * (1.4f * unit(random) - 0.3f), 50.0f * unit(random) - 25.0f,
+                                               side * (1.4f * unit(random) - 0.3f), 0.2f + 3.0f * unit(random));
+                        const bool expected = shader::tsLodBehindTerrain(sphere, p, lowest.data());
+                        ASSERT_EQ(pyramid.behindTerrain(sphere, p), expected) << where << " sphere " << k;
+                        (expected ? hiddenCount : visibleCount)++;
+                    }
+                });
     std::cout << "[lod horizon] pyramid: " << hiddenCount << " hidden, " << visibleCount << " not\n";
     EXPECT_GT(hiddenCount, 2000u);
     EXPECT_GT(visibleCount, 2000u);
@@ -175,50 +206,35 @@ TEST(LodHorizon, AGroupProofGivesEachSphereTheSharedRulesAnswer) {
     std::mt19937 random(41);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     uint32_t groups = 0, noneHidden = 0, blocked = 0, hiddenCount = 0, visibleCount = 0;
-    for (const uint32_t n : {1u, 7u, 16u, 128u}) {
-        for (int grid = 0; grid < 10; ++grid) {
-            const float cell = 2.0f + 60.0f * unit(random);
-            const float side = cell * float(n);
-            std::vector<float> lowest(size_t(n) * n);
-            for (uint32_t j = 0; j < n; ++j)
-                for (uint32_t i = 0; i < n; ++i)
-                    lowest[size_t(j) * n + i] = 20.0f * std::sin(0.3f * float(i) + float(grid)) * std::cos(0.2f * float(j)) +
-                                                (unit(random) < 0.05f ? 40.0f * unit(random) : 0.0f);
-            lod::HorizonPyramid pyramid;
-            pyramid.build(lowest.data(), n);
-            shader::CrowdLodParams p{};
-            p.occluder = glm::vec4(-0.1f * side, -0.2f * side, cell, float(n));
-            for (int view = 0; view < 8; ++view) {
-                p.eye = glm::vec4(side * (1.4f * unit(random) - 0.3f), 60.0f * unit(random) - 10.0f,
-                                  side * (1.4f * unit(random) - 0.3f), 800.0f);
-                for (int g = 0; g < 60; ++g) {
-                    // 32 spheres within a few metres to a cell of each other.
-                    const float spread = (unit(random) < 0.5f ? 4.0f : cell) * unit(random);
-                    const glm::vec3 centre(side * (1.4f * unit(random) - 0.3f), 50.0f * unit(random) - 25.0f,
-                                           side * (1.4f * unit(random) - 0.3f));
-                    std::vector<glm::vec4> spheres;
-                    lod::SphereBounds bounds;
-                    for (int k = 0; k < 32; ++k) {
-                        spheres.emplace_back(centre + spread * glm::vec3(unit(random) - 0.5f, 0.2f * unit(random),
-                                                                          unit(random) - 0.5f),
-                                             0.2f + 2.0f * unit(random));
-                        bounds.add(spheres.back());
+    forEachView(random, {1u, 7u, 16u, 128u}, 10, 60.0f, false,
+                [&](const lod::HorizonPyramid& pyramid, const std::vector<float>& lowest,
+                    const shader::CrowdLodParams& p, float side, const std::string& where) {
+                    const float cell = p.occluder.z;
+                    for (int g = 0; g < 60; ++g) {
+                        // 32 spheres within a few metres to a cell of each other.
+                        const float spread = (unit(random) < 0.5f ? 4.0f : cell) * unit(random);
+                        const glm::vec3 centre(side * (1.4f * unit(random) - 0.3f), 50.0f * unit(random) - 25.0f,
+                                               side * (1.4f * unit(random) - 0.3f));
+                        std::vector<glm::vec4> spheres;
+                        lod::SphereBounds bounds;
+                        for (int k = 0; k < 32; ++k) {
+                            spheres.emplace_back(centre + spread * glm::vec3(unit(random) - 0.5f, 0.2f * unit(random),
+                                                                              unit(random) - 0.5f),
+                                                 0.2f + 2.0f * unit(random));
+                            bounds.add(spheres.back());
+                        }
+                        const lod::GroupSight proof = pyramid.proveGroup(bounds, p);
+                        ++groups;
+                        noneHidden += proof.verdict == lod::GroupSight::Verdict::NoneHidden;
+                        blocked += proof.verdict == lod::GroupSight::Verdict::Blocked;
+                        for (size_t k = 0; k < spheres.size(); ++k) {
+                            const bool expected = shader::tsLodBehindTerrain(spheres[k], p, lowest.data());
+                            ASSERT_EQ(pyramid.behindTerrain(spheres[k], p, proof), expected)
+                                << where << " group " << g << " sphere " << k << " verdict " << int(proof.verdict);
+                            (expected ? hiddenCount : visibleCount)++;
+                        }
                     }
-                    const lod::GroupSight proof = pyramid.proveGroup(bounds, p);
-                    ++groups;
-                    noneHidden += proof.verdict == lod::GroupSight::Verdict::NoneHidden;
-                    blocked += proof.verdict == lod::GroupSight::Verdict::Blocked;
-                    for (size_t k = 0; k < spheres.size(); ++k) {
-                        const bool expected = shader::tsLodBehindTerrain(spheres[k], p, lowest.data());
-                        ASSERT_EQ(pyramid.behindTerrain(spheres[k], p, proof), expected)
-                            << "n " << n << " grid " << grid << " view " << view << " group " << g << " sphere " << k
-                            << " verdict " << int(proof.verdict);
-                        (expected ? hiddenCount : visibleCount)++;
-                    }
-                }
-            }
-        }
-    }
+                });
     std::cout << "[lod horizon] groups: " << groups << ", proven none hidden " << noneHidden << ", blocked " << blocked
               << "; spheres " << hiddenCount << " hidden, " << visibleCount << " not\n";
     EXPECT_GT(noneHidden, groups / 4);
