@@ -1,11 +1,15 @@
 #pragma once
 /// @file StreamoutCrowdBinPass.h
 /// GPU pass "crowd.bin" of streamout's crowd: LOD binning by successive
-/// stream-out passes, one per (tier, creature) list. Each draws the
-/// creature's survivors (an indirect draw whose count the cull pass's query
-/// left) through a geometry shader that emits the entries of the tier
+/// stream-out passes. First a split per creature copies the survivors the
+/// mesh tiers can take into the mesh survivors (streamout_crowd_split.geom);
+/// then one pass per (tier, creature) list draws the creature's mesh
+/// survivors (near, middle, far) or all its survivors (impostor) as points
+/// (an indirect draw whose count the split's or the cull pass's query left)
+/// through a geometry shader that emits the entries of the tier
 /// (streamout_crowd_bin.geom) into the list's region of crowd.lists(),
-/// inside a transform-feedback stream query. The queries' results are
+/// inside a transform-feedback stream query. Most of a large crowd is
+/// impostors: two passes read every survivor, not four. The queries' results are
 /// copied on the GPU into the indirect commands' instance counts and the
 /// near passes' draws, so nothing waits on the CPU.
 
@@ -31,10 +35,13 @@ public:
                 const StreamoutCrowdBindings& bindings);
 
 private:
+    /// The split, with the mesh survivors' counts copied into their draws.
+    void split(gpu::FrameContext& frame, GpuCrowd& crowd, StreamoutCrowdResources& resources,
+               const StreamoutCrowdBindings& bindings);
     void copyCounts(VkCommandBuffer cmd, GpuCrowd& crowd, StreamoutCrowdResources& resources);
 
     const gpu::PipelineLayout* mLayout = nullptr;
-    gpu::Pipeline mPipeline;
+    gpu::Pipeline mPipeline, mSplitPipeline;
 };
 
 } // namespace tessera::backends

@@ -13,7 +13,7 @@
 namespace tessera::backends {
 namespace {
 
-constexpr VkDeviceSize kRecordBytes = 16; // (instance, next state, id, creature)
+constexpr VkDeviceSize kRecordBytes = StreamoutCrowdResources::kSurvivorBytes;
 
 } // namespace
 

@@ -40,13 +40,15 @@ Result<std::unique_ptr<StreamoutCrowdResources>> StreamoutCrowdResources::create
     }
 
     const VkBufferUsageFlags xfb = VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT;
-    r->mSurvivors =
-        gpu::Buffer(device, VkDeviceSize(crowd.maxInstances()) * 16, xfb | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                    gpu::MemoryUsage::GpuOnly, "streamout.crowd.survivors");
+    const VkDeviceSize survivorBytes = VkDeviceSize(crowd.maxInstances()) * kSurvivorBytes;
+    r->mSurvivors = gpu::Buffer(device, survivorBytes, xfb | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                gpu::MemoryUsage::GpuOnly, "streamout.crowd.survivors");
+    r->mMeshSurvivors = gpu::Buffer(device, survivorBytes, xfb | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                                    gpu::MemoryUsage::GpuOnly, "streamout.crowd.meshSurvivors");
 
     const uint32_t creatures = uint32_t(crowd.creatures().size());
     r->mCreatures = creatures;
-    r->mQueryCount = (TS_LOD_TIERS + 1) * creatures;
+    r->mQueryCount = (TS_LOD_TIERS + 2) * creatures;
     VkQueryPoolCreateInfo pool{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     pool.queryType = VK_QUERY_TYPE_TRANSFORM_FEEDBACK_STREAM_EXT;
     pool.queryCount = r->mQueryCount;
@@ -57,9 +59,10 @@ Result<std::unique_ptr<StreamoutCrowdResources>> StreamoutCrowdResources::create
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                              gpu::MemoryUsage::GpuOnly, "streamout.crowd.listCounts");
 
-    // Per creature: {survivors, 1, 0, 0}, {near entries, 1, 0, 0} and
-    // {nearStride, near entries, 0, 0}; the counts are copied in every frame.
-    std::vector<VkDrawIndirectCommand> draws(3 * creatures, VkDrawIndirectCommand{0, 1, 0, 0});
+    // Per creature: {survivors, 1, 0, 0}, {near entries, 1, 0, 0},
+    // {nearStride, near entries, 0, 0} and {mesh survivors, 1, 0, 0}; the
+    // counts are copied in every frame.
+    std::vector<VkDrawIndirectCommand> draws(4 * creatures, VkDrawIndirectCommand{0, 1, 0, 0});
     for (uint32_t c = 0; c < creatures; ++c) draws[2 * creatures + c] = {crowd.nearStride(), 0, 0, 0};
     r->mDraws = gpu::Buffer(device, draws.size() * sizeof(VkDrawIndirectCommand), VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                             gpu::MemoryUsage::GpuOnly, "streamout.crowd.draws");
@@ -93,7 +96,7 @@ void StreamoutCrowdResources::copyResults(VkCommandBuffer cmd, uint32_t first, u
 }
 
 uint64_t StreamoutCrowdResources::bytes() const {
-    uint64_t total = mSurvivors.size() + mCounts.size() + mDraws.size() + mCages.size();
+    uint64_t total = mSurvivors.size() + mMeshSurvivors.size() + mCounts.size() + mDraws.size() + mCages.size();
     for (const gpu::Image& image : mState) total += uint64_t(image.width()) * image.height() * sizeof(uint32_t);
     return total;
 }

@@ -8,14 +8,17 @@
 ///    each frame's cull pass loads last frame's target and rasterises into
 ///    the other, so no target is read and written by one pass;
 ///  - the survivors buffer the cull pass streams out, one region per
-///    creature (its range of the creature-sorted instances);
-///  - a transform-feedback stream query per creature's survivors and per
-///    (tier, creature) list, and the buffer their results are copied to, from
+///    creature (its range of the creature-sorted instances), and the mesh
+///    survivors the bin pass's split copies from it (those the near, middle
+///    and far lists can take), in the same regions;
+///  - a transform-feedback stream query per creature's survivors, per
+///    creature's mesh survivors and per (tier, creature) list, and the buffer their results are copied to, from
 ///    which the counts reach the indirect commands (the lists' instance
 ///    counts, the later passes' draws) without the CPU waiting;
-///  - per creature three indirect draws of the later passes: the bin pass's
-///    (a point per survivor), the slots pass's (a point per near entry) and
-///    the skin pass's (nearStride points, instanced by the near entries).
+///  - per creature four indirect draws of the later passes: the bin pass's
+///    over its survivors (a point each) and over its mesh survivors, the
+///    slots pass's (a point per near entry) and the skin pass's (nearStride
+///    points, instanced by the near entries).
 ///    They take the place of draw-auto (vkCmdDrawIndirectByteCountEXT): on
 ///    lavapipe 22.3 a draw-auto recorded after an indirect draw in the same
 ///    command buffer (here the terrain's pattern draws) draws the indirect
@@ -51,11 +54,16 @@ public:
     /// Query (and result) of list (tier, creature), and of a creature's survivors.
     uint32_t listQuery(uint32_t tier, uint32_t creature) const { return tier * mCreatures + creature; }
     uint32_t survivorsQuery(uint32_t creature) const { return TS_LOD_TIERS * mCreatures + creature; }
+    uint32_t meshSurvivorsQuery(uint32_t creature) const { return (TS_LOD_TIERS + 1) * mCreatures + creature; }
     /// Byte offsets in draws() of a creature's VkDrawIndirectCommand for the
-    /// bin, slots and skin passes.
+    /// bin pass over its survivors and over its mesh survivors, and for the
+    /// slots and skin passes.
     VkDeviceSize binDraw(uint32_t creature) const { return drawOffset(0, creature); }
     VkDeviceSize slotsDraw(uint32_t creature) const { return drawOffset(1, creature); }
     VkDeviceSize skinDraw(uint32_t creature) const { return drawOffset(2, creature); }
+    VkDeviceSize meshBinDraw(uint32_t creature) const { return drawOffset(3, creature); }
+    /// Bytes of a survivor record: (instance, next state).
+    static constexpr VkDeviceSize kSurvivorBytes = 2 * sizeof(uint32_t);
     /// Bytes per query result in counts(): primitives written, then needed.
     static constexpr VkDeviceSize kResultBytes = 2 * sizeof(uint32_t);
 
@@ -69,6 +77,7 @@ public:
     void flipState() { mRead = 1 - mRead; }
 
     gpu::Buffer& survivors() { return mSurvivors; }
+    gpu::Buffer& meshSurvivors() { return mMeshSurvivors; }
     VkQueryPool queries() const { return mQueries.get(); }
     uint32_t queryCount() const { return mQueryCount; }
     gpu::Buffer& counts() { return mCounts; }
@@ -95,7 +104,7 @@ private:
     std::array<gpu::Image, 2> mState;
     uint32_t mRead = 0;
     uint32_t mCreatures = 0;
-    gpu::Buffer mSurvivors, mCounts, mDraws, mCages;
+    gpu::Buffer mSurvivors, mMeshSurvivors, mCounts, mDraws, mCages;
     gpu::BufferView mCagesView;
     gpu::UniqueHandle<VkQueryPool, VK_OBJECT_TYPE_QUERY_POOL> mQueries;
     uint32_t mQueryCount = 0;

@@ -12,11 +12,11 @@
 layout(points) in;
 layout(points, max_vertices = 1) out;
 
-layout(location = 0) in uvec4 vSurvivor[];
-layout(location = 0, xfb_buffer = 0, xfb_offset = 0, xfb_stride = 16) flat out uvec4 outSurvivor;
+layout(location = 0) in uvec2 vSurvivor[];
+layout(location = 0, xfb_buffer = 0, xfb_offset = 0, xfb_stride = 8) flat out uvec2 outSurvivor;
 
 void main() {
-    uvec4 survivor = vSurvivor[0];
+    uvec2 survivor = vSurvivor[0]; // (instance, next state)
     if (tsLodStateTier(survivor.y) == TS_LOD_NONE) return;
     outSurvivor = survivor;
     gl_Position = gl_in[0].gl_Position;

@@ -4,7 +4,7 @@
 // instances). It loads the instance (a texel buffer, D3D10's Buffer.Load)
 // and last frame's state of its id (Texture2D.Load from the state render
 // target), runs the shared rule (tsLodUpdate, CrowdLod.h) and hands the
-// survivor record (instance, next state, id, creature) to the geometry
+// survivor record (instance, next state) to the geometry
 // stage, placed on the id's texel of this frame's state target.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_samplerless_texture_functions : require
@@ -16,7 +16,7 @@
 
 layout(set = 0, binding = TS_BINDING_CROWD_STATE) uniform utexture2D uState; // last frame's state per id
 
-layout(location = 0) flat out uvec4 vSurvivor;
+layout(location = 0) flat out uvec2 vSurvivor;
 
 void main() {
     uint i = uint(gl_VertexIndex);
@@ -33,5 +33,5 @@ void main() {
     } else {
         gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
     }
-    vSurvivor = uvec4(i, next, id, instance.ids.y);
+    vSurvivor = uvec2(i, next);
 }
