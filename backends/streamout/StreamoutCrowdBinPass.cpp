@@ -113,15 +113,7 @@ void StreamoutCrowdBinPass::split(gpu::FrameContext& frame, GpuCrowd& crowd, Str
                        VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT);
     // Each creature's mesh survivors count becomes the vertex count of its
     // mesh tiers' bin draws.
-    resources.copyResults(cmd, resources.meshSurvivorsQuery(0), creatures);
-    std::vector<VkBufferCopy> copies;
-    for (uint32_t c = 0; c < creatures; ++c)
-        copies.push_back({StreamoutCrowdResources::resultOffset(resources.meshSurvivorsQuery(c)),
-                          resources.meshBinDraw(c) + offsetof(VkDrawIndirectCommand, vertexCount), sizeof(uint32_t)});
-    vkCmdCopyBuffer(cmd, resources.counts().handle(), resources.draws().handle(), uint32_t(copies.size()),
-                    copies.data());
-    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+    resources.countsToDraws(cmd, resources.meshSurvivorsQuery(0), &StreamoutCrowdResources::meshBinDraw);
 }
 
 void StreamoutCrowdBinPass::copyCounts(VkCommandBuffer cmd, GpuCrowd& crowd, StreamoutCrowdResources& resources) {

@@ -118,16 +118,7 @@ void StreamoutCrowdCullPass::record(gpu::FrameContext& frame, GpuCrowd& crowd, S
     // Each creature's survivors count becomes the vertex count of its bin
     // draws (what draw-auto would read from a counter; see
     // StreamoutCrowdResources.h for why a query feeds it instead).
-    const uint32_t creatures = uint32_t(ranges.size());
-    resources.copyResults(cmd, resources.survivorsQuery(0), creatures);
-    std::vector<VkBufferCopy> copies;
-    for (uint32_t c = 0; c < creatures; ++c)
-        copies.push_back({StreamoutCrowdResources::resultOffset(resources.survivorsQuery(c)),
-                          resources.binDraw(c) + offsetof(VkDrawIndirectCommand, vertexCount), sizeof(uint32_t)});
-    vkCmdCopyBuffer(cmd, resources.counts().handle(), resources.draws().handle(), uint32_t(copies.size()),
-                    copies.data());
-    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
+    resources.countsToDraws(cmd, resources.survivorsQuery(0), &StreamoutCrowdResources::binDraw);
     resources.flipState();
 }
 

@@ -4,6 +4,8 @@
 #include "tessera/gpu/VulkanCheck.h"
 
 #include <algorithm>
+#include <cstddef>
+#include <vector>
 
 namespace tessera::backends {
 
@@ -93,6 +95,18 @@ void StreamoutCrowdResources::copyResults(VkCommandBuffer cmd, uint32_t first, u
                               VK_QUERY_RESULT_WAIT_BIT);
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
                        VK_ACCESS_2_TRANSFER_READ_BIT);
+}
+
+void StreamoutCrowdResources::countsToDraws(VkCommandBuffer cmd, uint32_t firstQuery,
+                                            VkDeviceSize (StreamoutCrowdResources::*draw)(uint32_t) const) {
+    copyResults(cmd, firstQuery, mCreatures);
+    std::vector<VkBufferCopy> copies;
+    for (uint32_t c = 0; c < mCreatures; ++c)
+        copies.push_back({resultOffset(firstQuery + c), (this->*draw)(c) + offsetof(VkDrawIndirectCommand, vertexCount),
+                          sizeof(uint32_t)});
+    vkCmdCopyBuffer(cmd, mCounts.handle(), mDraws.handle(), uint32_t(copies.size()), copies.data());
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT);
 }
 
 uint64_t StreamoutCrowdResources::bytes() const {

@@ -89,6 +89,10 @@ public:
     /// Copies queries [first, first + count)'s results into counts() (the GPU
     /// waits for them, the CPU never does) and makes them ready to copy on.
     void copyResults(VkCommandBuffer cmd, uint32_t first, uint32_t count);
+    /// Copies the results of the per-creature queries from `firstQuery` on
+    /// into the vertex counts of each creature's draw at (this->*draw)(c),
+    /// leaving them ready for indirect draws.
+    void countsToDraws(VkCommandBuffer cmd, uint32_t firstQuery, VkDeviceSize (StreamoutCrowdResources::*draw)(uint32_t) const);
     /// Where query `query`'s primitives-written count lies in counts().
     static VkDeviceSize resultOffset(uint32_t query) { return query * kResultBytes; }
 
