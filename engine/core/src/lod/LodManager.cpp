@@ -18,7 +18,6 @@ constexpr uint32_t kGrain = 4096;
 // Instances whose horizon is proven together (HorizonPyramid::proveGroup).
 constexpr uint32_t kHorizonGroup = 32;
 
-
 bool continuesFadeFrom(uint32_t state, uint32_t tier) {
     // A fade with two or more frames left still draws the copy after this
     // frame's update, unless the instance changes tier again (then the copy
@@ -160,6 +159,7 @@ void LodManager::classify(std::span<const LodInstance> instances) {
                 Seen& seen = mSeen[i];
                 seen.tier = TS_LOD_NONE;
                 seen.hidden = TS_LOD_NONE;
+                // Any tier but none marks it in view until its own is worked out below.
                 seen.candidate = shader::tsLodInFrustum(instances[i].sphere, p) ? TS_LOD_IMPOSTOR : TS_LOD_NONE;
                 if (seen.candidate != TS_LOD_NONE) sight.add(instances[i].sphere);
             }
