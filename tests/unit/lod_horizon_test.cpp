@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -241,4 +242,30 @@ TEST(LodHorizon, AGroupProofGivesEachSphereTheSharedRulesAnswer) {
     EXPECT_GT(blocked, groups / 20);
     EXPECT_GT(hiddenCount, 2000u);
     EXPECT_GT(visibleCount, 2000u);
+}
+
+// Spheres that are not finite (a game's bug, never the crowd's) are out of
+// view, as every backend leaves them out, and do not spoil the horizon
+// proof of the group they fall in.
+TEST(LodHorizon, ASphereThatIsNotFiniteIsOutOfViewAndSpoilsNoGroup) {
+    Grid grid;
+    for (uint32_t i = 0; i < kCells; ++i) grid.at(i, 6) = 20.0f;
+    scene::Camera camera;
+    camera.setPosition({80.0f, 3.0f, 150.0f});
+    lod::LodView view = lod::LodView::fromCamera(camera, 720, 64.0f);
+    view.occluders = grid.lowest;
+    view.occluderGrid = glm::vec4(0.0f, 0.0f, kCell, float(kCells));
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    std::vector<lod::LodInstance> instances;
+    for (uint32_t k = 0; k < 40; ++k) // in front of the ridge: seen
+        instances.push_back({glm::vec4(78.0f + 0.1f * float(k), 1.0f, 100.0f, 0.8f), k, 0});
+    instances[3].sphere.x = nan;
+    instances[7].sphere.w = inf;
+    instances[11].sphere.w = -1.0f;
+    const std::vector<lod::LodCharacter> characters(1);
+    lod::LodManager manager;
+    const lod::LodFrame& frame = manager.update(instances, characters, view);
+    EXPECT_EQ(frame.inView, 37u);
+    for (uint32_t k : {3u, 7u, 11u}) EXPECT_EQ(shader::tsLodStateTier(manager.state(k)), TS_LOD_NONE) << k;
+    EXPECT_NE(shader::tsLodStateTier(manager.state(0)), TS_LOD_NONE);
 }

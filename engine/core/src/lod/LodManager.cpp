@@ -159,9 +159,15 @@ void LodManager::classify(std::span<const LodInstance> instances) {
                 Seen& seen = mSeen[i];
                 seen.tier = TS_LOD_NONE;
                 seen.hidden = TS_LOD_NONE;
-                // Any tier but none marks it in view until its own is worked out below.
-                seen.candidate = shader::tsLodInFrustum(instances[i].sphere, p) ? TS_LOD_IMPOSTOR : TS_LOD_NONE;
-                if (seen.candidate != TS_LOD_NONE) sight.add(instances[i].sphere);
+                // Any tier but none marks it in view until its own is worked
+                // out below. A sphere that is not finite is never in view: the
+                // backends leave such an instance out (backend::crowdInstanceValid),
+                // and its bounds would make the group's proof meaningless.
+                const glm::vec4& sphere = instances[i].sphere;
+                const bool finite = std::isfinite(sphere.x) && std::isfinite(sphere.y) && std::isfinite(sphere.z) &&
+                                    std::isfinite(sphere.w) && sphere.w >= 0.0f;
+                seen.candidate = finite && shader::tsLodInFrustum(sphere, p) ? TS_LOD_IMPOSTOR : TS_LOD_NONE;
+                if (seen.candidate != TS_LOD_NONE) sight.add(sphere);
             }
             const GroupSight proof = sight.count ? mHorizon.proveGroup(sight, p) : GroupSight{};
             for (uint32_t i = group; i < end; ++i) {

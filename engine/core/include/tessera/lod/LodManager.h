@@ -34,7 +34,9 @@ public:
 
     /// Selects this frame's tiers for `instances` seen from `view`:
     /// culls, sorts by size with hysteresis, fits the budget, advances the
-    /// cross-fades. Instance `character` fields index `characters`.
+    /// cross-fades. Instance `character` fields index `characters`. An
+    /// instance whose sphere is not finite, or has a negative radius, is out
+    /// of view (every backend leaves such an instance out too).
     const LodFrame& update(std::span<const LodInstance> instances, std::span<const LodCharacter> characters,
                            const LodView& view);
     /// Whether updates fill LodFrame::tiers, the per-tier lists (default:
