@@ -23,65 +23,65 @@ constexpr uint32_t kMaxDepth = 5;
 
 } // namespace
 
-void HorizonPyramid::build(const float* occluders, uint32_t n) {
-    mGrid = occluders;
-    mSide = n;
-    mSides.assign(1, n);
-    // Rebuilt every frame (craters change the grid); the levels keep their storage.
-    size_t levels = 0;
-    for (uint32_t side = n; side > 1; side = (side + 1) / 2) ++levels;
-    mLevels.resize(levels);
-    mMinLevels.resize(levels);
-    const float* below = occluders;
-    const float* belowMin = occluders;
-    uint32_t side = n;
-    for (size_t k = 0; k < levels; ++k) {
+void HorizonPyramid::appendLevels(const float* grid, uint32_t n, std::vector<float>& out, bool highest) {
+    // The grid, then each level of the 2 x 2 blocks' extreme below it, up
+    // to a level of one, in one array (a level's blocks read in place).
+    out.assign(grid, grid + size_t(n) * n);
+    size_t below = 0;
+    for (uint32_t side = n; side > 1; side = (side + 1) / 2) {
         const uint32_t up = (side + 1) / 2;
-        std::vector<float>& level = mLevels[k];
-        std::vector<float>& levelMin = mMinLevels[k];
-        level.resize(size_t(up) * up);
-        levelMin.resize(size_t(up) * up);
+        const size_t at = out.size();
+        out.resize(at + size_t(up) * up);
         for (uint32_t j = 0; j < up; ++j)
             for (uint32_t i = 0; i < up; ++i) {
                 const uint32_t i1 = std::min(2 * i + 1, side - 1), j1 = std::min(2 * j + 1, side - 1);
-                const size_t a = size_t(2 * j) * side + 2 * i, b = size_t(2 * j) * side + i1;
-                const size_t c = size_t(j1) * side + 2 * i, d = size_t(j1) * side + i1;
-                level[size_t(j) * up + i] = std::max(std::max(below[a], below[b]), std::max(below[c], below[d]));
-                levelMin[size_t(j) * up + i] =
-                    std::min(std::min(belowMin[a], belowMin[b]), std::min(belowMin[c], belowMin[d]));
+                const float a = out[below + size_t(2 * j) * side + 2 * i], b = out[below + size_t(2 * j) * side + i1];
+                const float c = out[below + size_t(j1) * side + 2 * i], d = out[below + size_t(j1) * side + i1];
+                out[at + size_t(j) * up + i] =
+                    highest ? std::max(std::max(a, b), std::max(c, d)) : std::min(std::min(a, b), std::min(c, d));
             }
-        mSides.push_back(up);
-        below = level.data();
-        belowMin = levelMin.data();
-        side = up;
+        below = at;
     }
+}
+
+void HorizonPyramid::build(const float* occluders, uint32_t n) {
+    // Rebuilt every frame (craters change the grid); the arrays keep their storage.
+    mSide = occluders ? n : 0;
+    if (!occluders) return;
+    appendLevels(occluders, n, mHighest, true);
+    appendLevels(occluders, n, mLowest, false);
 }
 
 namespace {
 
-// The extreme of the cells in [i0, i1] x [j0, j1] at the finest level where
-// the rectangle spans at most two blocks a side.
+// The extreme of the cells in [i0, i1] x [j0, j1] (inside the grid) from a
+// pyramid in appendLevels' layout: the finest level where the rectangle spans
+// at most two blocks a side.
 template <class Pick>
-float pickCells(const float* grid, const std::vector<std::vector<float>>& levels, const std::vector<uint32_t>& sides,
-                int32_t i0, int32_t j0, int32_t i1, int32_t j1, Pick pick) {
-    uint32_t k = 0;
-    while ((i1 >> k) - (i0 >> k) > 1 || (j1 >> k) - (j0 >> k) > 1) ++k;
-    k = std::min<uint32_t>(k, uint32_t(sides.size()) - 1);
-    const float* cells = k == 0 ? grid : levels[k - 1].data();
-    const int32_t side = int32_t(sides[k]);
-    const int32_t a = std::min(i0 >> k, side - 1), b = std::min(i1 >> k, side - 1);
-    const int32_t c = std::min(j0 >> k, side - 1), e = std::min(j1 >> k, side - 1);
+float pickCells(const std::vector<float>& pyramid, uint32_t n, int32_t i0, int32_t j0, int32_t i1, int32_t j1,
+                Pick pick) {
+    uint32_t offset = 0, side = n;
+    int32_t k = 0;
+    while (side > 1 && ((i1 >> k) - (i0 >> k) > 1 || (j1 >> k) - (j0 >> k) > 1)) {
+        offset += side * side;
+        side = (side + 1) / 2;
+        ++k;
+    }
+    const int32_t last = int32_t(side) - 1;
+    const uint32_t a = uint32_t(std::min(i0 >> k, last)), b = uint32_t(std::min(i1 >> k, last));
+    const uint32_t c = uint32_t(std::min(j0 >> k, last)), e = uint32_t(std::min(j1 >> k, last));
+    const float* cells = pyramid.data() + offset;
     return pick(pick(cells[c * side + a], cells[c * side + b]), pick(cells[e * side + a], cells[e * side + b]));
 }
 
 } // namespace
 
 float HorizonPyramid::highest(int32_t i0, int32_t j0, int32_t i1, int32_t j1) const {
-    return pickCells(mGrid, mLevels, mSides, i0, j0, i1, j1, [](float a, float b) { return std::max(a, b); });
+    return pickCells(mHighest, mSide, i0, j0, i1, j1, [](float a, float b) { return std::max(a, b); });
 }
 
 float HorizonPyramid::lowest(int32_t i0, int32_t j0, int32_t i1, int32_t j1) const {
-    return pickCells(mGrid, mMinLevels, mSides, i0, j0, i1, j1, [](float a, float b) { return std::min(a, b); });
+    return pickCells(mLowest, mSide, i0, j0, i1, j1, [](float a, float b) { return std::min(a, b); });
 }
 
 bool HorizonPyramid::runMayBeBlocked(uint32_t first, uint32_t last, uint32_t steps, const glm::vec4& delta,
@@ -108,7 +108,7 @@ bool HorizonPyramid::runMayBeBlocked(uint32_t first, uint32_t last, uint32_t ste
 }
 
 bool HorizonPyramid::behindTerrain(const glm::vec4& sphere, const shader::CrowdLodParams& p) const {
-    if (uint32_t(p.occluder.w) == 0u || mGrid == nullptr) return false;
+    if (uint32_t(p.occluder.w) == 0u || mSide == 0) return false;
     glm::vec4 delta;
     glm::vec2 cone;
     const uint32_t steps = shader::tsLodSight(sphere, p, delta, cone);
@@ -118,7 +118,7 @@ bool HorizonPyramid::behindTerrain(const glm::vec4& sphere, const shader::CrowdL
         const uint32_t last = std::min(first + kRun - 1, steps);
         if (first > 1 && !runMayBeBlocked(first, last, steps, delta, cone, p)) continue;
         for (uint32_t s = first; s <= last; ++s)
-            if (shader::tsLodSightBlockedAt(s, steps, delta, cone, p, mGrid)) return true;
+            if (shader::tsLodSightBlockedAt(s, steps, delta, cone, p, mHighest.data())) return true;
     }
     return false;
 }
@@ -172,7 +172,7 @@ bool HorizonPyramid::noneBlocked(const SphereBounds& bounds, const shader::Crowd
 
 GroupSight HorizonPyramid::proveGroup(const SphereBounds& bounds, const shader::CrowdLodParams& p) const {
     GroupSight sight;
-    if (uint32_t(p.occluder.w) == 0u || mGrid == nullptr || noneBlocked(bounds, p, 0.0, 1.0, 0)) {
+    if (uint32_t(p.occluder.w) == 0u || mSide == 0 || noneBlocked(bounds, p, 0.0, 1.0, 0)) {
         sight.verdict = GroupSight::Verdict::NoneHidden;
         return sight;
     }

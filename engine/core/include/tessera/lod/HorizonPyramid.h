@@ -51,8 +51,8 @@ struct SphereBounds {
 
 class HorizonPyramid {
 public:
-    /// Builds the pyramid over `occluders` (n x n, row by row; CrowdLodParams::
-    /// occluder.w cells a side). `occluders` must outlive the tests.
+    /// Builds the pyramids over `occluders` (n x n, row by row; CrowdLodParams::
+    /// occluder.w cells a side), copying them; nullptr: no grid.
     void build(const float* occluders, uint32_t n);
     /// Exactly shader::tsLodBehindTerrain(sphere, p, occluders) for the grid
     /// built (`p.occluder.w` must be its side).
@@ -71,6 +71,10 @@ private:
     /// cell any of them could read.
     bool runMayBeBlocked(uint32_t first, uint32_t last, uint32_t steps, const glm::vec4& delta,
                          const glm::vec2& cone, const shader::CrowdLodParams& p) const;
+    /// The n x n grid followed by its max (`highest`) or min pyramid, level k
+    /// = 1, 2, ... the extreme of each 2^k x 2^k block, ceil(n / 2^k) a side,
+    /// row by row, up to a level of one: one array, read in place.
+    static void appendLevels(const float* grid, uint32_t n, std::vector<float>& out, bool highest);
     /// The highest cell in [i0, i1] x [j0, j1] (clamped to the grid, not empty).
     float highest(int32_t i0, int32_t j0, int32_t i1, int32_t j1) const;
     /// The lowest cell in the same way (the min pyramid).
@@ -86,13 +90,9 @@ private:
     bool noneBlocked(const SphereBounds& bounds, const shader::CrowdLodParams& p, double ta, double tb,
                      uint32_t depth) const;
 
-    const float* mGrid = nullptr;
-    uint32_t mSide = 0;
-    /// Level k >= 1: the max of 2^k x 2^k cells; side ceil(n / 2^k).
-    std::vector<std::vector<float>> mLevels;
-    /// The same levels with the min of each block.
-    std::vector<std::vector<float>> mMinLevels;
-    std::vector<uint32_t> mSides;
+    uint32_t mSide = 0; ///< 0: no grid
+    /// The grid and its max and min pyramids (appendLevels).
+    std::vector<float> mHighest, mLowest;
 };
 
 } // namespace tessera::lod
