@@ -100,6 +100,22 @@ void forEachView(std::mt19937& random, std::initializer_list<uint32_t> sizes, in
         }
 }
 
+/// A ridge along x, 60 to 70 m in z, seen from beyond it by a camera that
+/// looks down -z (its default) from (80, 3, 150).
+struct RidgeView {
+    Grid grid;
+    lod::LodView view;
+    RidgeView() {
+        for (uint32_t i = 0; i < kCells; ++i) grid.at(i, 6) = 20.0f;
+        scene::Camera camera;
+        camera.setPosition({80.0f, 3.0f, 150.0f});
+        view = lod::LodView::fromCamera(camera, 720, 64.0f);
+        view.occluders = grid.lowest;
+        view.occluderGrid = glm::vec4(0.0f, 0.0f, kCell, float(kCells));
+    }
+    RidgeView(const RidgeView&) = delete; // the view points into the grid
+};
+
 } // namespace
 
 TEST(LodHorizon, FlatGroundHidesNothing) {
@@ -181,19 +197,12 @@ TEST(LodHorizon, ThePyramidGivesTheSharedRulesAnswer) {
 }
 
 TEST(LodHorizon, TheManagerLeavesHiddenInstancesOutOfEveryTier) {
-    Grid grid;
-    for (uint32_t i = 0; i < kCells; ++i) grid.at(i, 6) = 20.0f;
-    // The camera looks down -z (its default) from beyond the ridge.
-    scene::Camera camera;
-    camera.setPosition({80.0f, 3.0f, 150.0f});
-    lod::LodView view = lod::LodView::fromCamera(camera, 720, 64.0f);
-    view.occluders = grid.lowest;
-    view.occluderGrid = glm::vec4(0.0f, 0.0f, kCell, float(kCells));
+    const RidgeView ridge;
     const std::vector<lod::LodInstance> instances = {{glm::vec4(80.0f, 1.0f, 120.0f, 0.8f), 0, 0},
                                                      {glm::vec4(80.0f, 1.0f, 30.0f, 0.8f), 1, 0}};
     const std::vector<lod::LodCharacter> characters(1);
     lod::LodManager manager;
-    const lod::LodFrame& frame = manager.update(instances, characters, view);
+    const lod::LodFrame& frame = manager.update(instances, characters, ridge.view);
     EXPECT_NE(shader::tsLodStateTier(manager.state(0)), TS_LOD_NONE);
     EXPECT_EQ(shader::tsLodStateTier(manager.state(1)), TS_LOD_NONE);
     EXPECT_EQ(frame.inView, 1u);
@@ -248,13 +257,7 @@ TEST(LodHorizon, AGroupProofGivesEachSphereTheSharedRulesAnswer) {
 // view, as every backend leaves them out, and do not spoil the horizon
 // proof of the group they fall in.
 TEST(LodHorizon, ASphereThatIsNotFiniteIsOutOfViewAndSpoilsNoGroup) {
-    Grid grid;
-    for (uint32_t i = 0; i < kCells; ++i) grid.at(i, 6) = 20.0f;
-    scene::Camera camera;
-    camera.setPosition({80.0f, 3.0f, 150.0f});
-    lod::LodView view = lod::LodView::fromCamera(camera, 720, 64.0f);
-    view.occluders = grid.lowest;
-    view.occluderGrid = glm::vec4(0.0f, 0.0f, kCell, float(kCells));
+    const RidgeView ridge;
     const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
     std::vector<lod::LodInstance> instances;
     for (uint32_t k = 0; k < 40; ++k) // in front of the ridge: seen
@@ -264,7 +267,7 @@ TEST(LodHorizon, ASphereThatIsNotFiniteIsOutOfViewAndSpoilsNoGroup) {
     instances[11].sphere.w = -1.0f;
     const std::vector<lod::LodCharacter> characters(1);
     lod::LodManager manager;
-    const lod::LodFrame& frame = manager.update(instances, characters, view);
+    const lod::LodFrame& frame = manager.update(instances, characters, ridge.view);
     EXPECT_EQ(frame.inView, 37u);
     for (uint32_t k : {3u, 7u, 11u}) EXPECT_EQ(shader::tsLodStateTier(manager.state(k)), TS_LOD_NONE) << k;
     EXPECT_NE(shader::tsLodStateTier(manager.state(0)), TS_LOD_NONE);
