@@ -4,6 +4,7 @@
 
 #include "character.frag_crowd.spv.h"
 #include "crowd_impostor.frag.spv.h"
+#include "crowd_impostor.frag_nearest.spv.h"
 #include "crowd_impostor.vert.spv.h"
 #include "crowd_mesh.vert.spv.h"
 #include "crowd_mesh.vert_shadow.spv.h"
@@ -59,8 +60,9 @@ HulldomainCrowdPass::HulldomainCrowdPass(gpu::Device& device, VkFormat colorForm
                    {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, hulldomain_character_patch_tese_crowd_shadow_spv}});
     mMesh = CrowdMeshPass(device, Mode::Storage, crowd_mesh_vert_spv, character_frag_crowd_spv, colorFormat, depthFormat,
                           "hulldomain.crowd.mesh", crowd_mesh_vert_shadow_spv);
-    mImpostor = CrowdImpostorPass(device, Mode::Storage, crowd_impostor_vert_spv, crowd_impostor_frag_spv, colorFormat,
-                                  depthFormat, "hulldomain.crowd.impostor");
+    mImpostor = CrowdImpostorPass(device, Mode::Storage, crowd_impostor_vert_spv,
+                                  crowdImpostorFragment(device, crowd_impostor_frag_spv, crowd_impostor_frag_nearest_spv),
+                                  colorFormat, depthFormat, "hulldomain.crowd.impostor");
 }
 
 void HulldomainCrowdPass::recordCompute(gpu::FrameContext& frame, GpuCrowd& crowd, CrowdDescriptors& descriptors,

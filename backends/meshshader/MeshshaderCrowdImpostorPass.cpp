@@ -1,9 +1,11 @@
 #include "MeshshaderCrowdImpostorPass.h"
 
+#include "common/CrowdImpostorPass.h"
 #include "tessera/gpu/Device.h"
 #include "tessera/shaders/CrowdMeshlet.h"
 
 #include "crowd_impostor.frag.spv.h"
+#include "crowd_impostor.frag_nearest.spv.h"
 #include "meshshader_crowd_impostor.mesh.spv.h"
 
 namespace tessera::backends {
@@ -27,7 +29,8 @@ MeshshaderCrowdImpostorPass::MeshshaderCrowdImpostorPass(gpu::Device& device, Vk
     desc.name = "meshshader.crowd.impostor";
     desc.layout = &mLayout;
     desc.stages = {{VK_SHADER_STAGE_MESH_BIT_EXT, meshshader_crowd_impostor_mesh_spv},
-                   {VK_SHADER_STAGE_FRAGMENT_BIT, crowd_impostor_frag_spv}};
+                   {VK_SHADER_STAGE_FRAGMENT_BIT,
+                    crowdImpostorFragment(device, crowd_impostor_frag_spv, crowd_impostor_frag_nearest_spv)}};
     // No face culled, as the other backends' cards (CrowdImpostorPass.cpp says why).
     desc.cullMode = VK_CULL_MODE_NONE;
     desc.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;

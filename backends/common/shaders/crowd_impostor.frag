@@ -9,6 +9,11 @@
 // plane: writing gl_FragDepth would cost early depth testing, and a far
 // creature's depth differs from its card's by under its radius.
 // TS_CROWD_TEXELS: the emulated backends' crowd bindings (declared only).
+// TS_IMPOSTOR_NEAREST_PHASE (CPU devices, crowdImpostorFragment): the
+// nearer of the two phases instead of their blend, two samples instead of
+// four: on lavapipe each sample is about a sixth of the tier's time, and at
+// its 8 to 15 frames a second the frames step between phases anyway (8 to
+// a 1.1 s walk cycle: a phase lasts 1 to 2 frames there).
 #extension GL_GOOGLE_include_directive : require
 #define TS_CROWD 1
 #include "character_shading.glsl"
@@ -31,10 +36,16 @@ void main() {
     float weight = uintBitsToFloat(inCard.z);
     // Every sample before any discard: their mip levels come from the
     // quad's derivatives.
+#ifdef TS_IMPOSTOR_NEAREST_PHASE
+    const vec3 at = vec3(inUv, float(weight < 0.5 ? inCard.x : inCard.y));
+    vec4 albedo = texture(uImpostorAlbedo, at);
+    vec3 stored = texture(uImpostorNormal, at).xyz;
+#else
     vec4 albedo = mix(texture(uImpostorAlbedo, vec3(inUv, float(inCard.x))),
                       texture(uImpostorAlbedo, vec3(inUv, float(inCard.y))), weight);
     vec3 stored = mix(texture(uImpostorNormal, vec3(inUv, float(inCard.x))).xyz,
                       texture(uImpostorNormal, vec3(inUv, float(inCard.y))).xyz, weight);
+#endif
     // The silhouette (coverage) and this draw's share of a cross-fade.
     if (albedo.a < 0.5 || !tsLodKeepPixel(gl_FragCoord.xy, uCharacter.lod.x, uCharacter.lod.y > 0.5)) discard;
     vec3 n = stored * 2.0 - 1.0;

@@ -1,6 +1,13 @@
 #include "common/CrowdImpostorPass.h"
 
+#include "tessera/gpu/Device.h"
+
 namespace tessera::backends {
+
+std::span<const uint32_t> crowdImpostorFragment(const gpu::Device& device, std::span<const uint32_t> blended,
+                                                std::span<const uint32_t> nearest) {
+    return device.features().isCpu ? nearest : blended;
+}
 
 // The list's entries are the only stream; the card's corners are its
 // indices. No face is culled: a card faces the baked view nearest the eye,

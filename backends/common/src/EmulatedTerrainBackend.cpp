@@ -11,6 +11,7 @@
 
 #include "character.frag_crowd_texels.spv.h"
 #include "crowd_impostor.frag_texels.spv.h"
+#include "crowd_impostor.frag_texels_nearest.spv.h"
 #include "crowd_impostor.vert_texels.spv.h"
 #include "crowd_mesh.vert_texels.spv.h"
 #include "crowd_mesh.vert_texels_shadow.spv.h"
@@ -65,7 +66,9 @@ Status EmulatedTerrainBackend::initializeTechnique(const backend::BackendInitInf
                                    crowd_mesh_vert_texels_shadow_spv);
         mCrowdNear = EmulatedCrowdNearPass(*mDevice, color, depth, name);
         mCrowdImpostor = CrowdImpostorPass(*mDevice, CrowdDescriptors::Mode::Texels, crowd_impostor_vert_texels_spv,
-                                           crowd_impostor_frag_texels_spv, color, depth, name + ".crowd.impostor");
+                                           crowdImpostorFragment(*mDevice, crowd_impostor_frag_texels_spv,
+                                                                 crowd_impostor_frag_texels_nearest_spv),
+                                           color, depth, name + ".crowd.impostor");
     }
     return {};
 }

@@ -21,6 +21,15 @@
 
 namespace tessera::backends {
 
+/// The impostor cards' fragment shader for `device`: crowd_impostor.frag
+/// `blended` (the two phases around the instance's, blended) on a GPU, its
+/// TS_IMPOSTOR_NEAREST_PHASE variant `nearest` (the nearer phase: two
+/// samples instead of four) on a CPU device, where the samples are most of
+/// the tier's time and the frames step between phases anyway
+/// (docs/CROWD.md, 6.10).
+std::span<const uint32_t> crowdImpostorFragment(const gpu::Device& device, std::span<const uint32_t> blended,
+                                                std::span<const uint32_t> nearest);
+
 class CrowdImpostorPass {
 public:
     CrowdImpostorPass() = default;
