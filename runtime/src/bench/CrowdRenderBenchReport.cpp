@@ -118,7 +118,7 @@ std::string crowdRenderBenchTable(const CrowdRenderSummary& s) {
         if (!r.suspectPasses.empty()) {
             std::string names;
             for (const std::string& n : r.suspectPasses) names += (names.empty() ? "" : ", ") + n;
-            out += "           GPU time not trusted (lavapipe's timestamps miss rasterisation): " + names + "\n";
+            out += "           GPU time not trusted (lavapipe's timestamps miss or carry rasterisation): " + names + "\n";
         }
     }
     out += "ratios (GPU frame, CPU frame): to hulldomain at the same size; to the backend's terrain alone\n";

@@ -41,7 +41,8 @@ struct CrowdRenderRow {
     std::array<double, lod::kTierCount> tierHidden{};
     uint64_t crowdBytes = 0; ///< device memory of the crowd (FrameReport::crowdBytes)
     /// GPU passes whose timestamps cannot be trusted against the frame
-    /// (lavapipe misses the rasterisation of some passes): named, not charted.
+    /// (lavapipe misses the rasterisation of some passes, and charges it to
+    /// a later one): named, not charted.
     std::vector<std::string> suspectPasses;
     std::string camera; ///< the row's fixed view, "x,y,z,yaw,pitch"
     std::string trace;
