@@ -1,5 +1,6 @@
 #include "common/DetailTextureArray.h"
 
+#include "tessera/core/MipChain.h"
 #include "tessera/shaders/TerrainUniforms.h"
 
 #include <algorithm>
@@ -25,33 +26,6 @@ float toLinear(uint8_t v) {
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
-uint8_t toSrgb(float c) {
-    c = std::clamp(c, 0.0f, 1.0f);
-    const float s = c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-    return uint8_t(std::lround(s * 255.0f));
-}
-
-/// The next mip of a square RGBA8 sRGB level: 2x2 boxes averaged in linear
-/// light (averaging the encoded bytes would darken every mip).
-std::vector<uint8_t> halve(const std::vector<uint8_t>& level, uint32_t size, const std::array<float, 256>& linear) {
-    const uint32_t half = size / 2;
-    std::vector<uint8_t> out(size_t(half) * half * 4);
-    for (uint32_t y = 0; y < half; ++y)
-        for (uint32_t x = 0; x < half; ++x)
-            for (uint32_t c = 0; c < 4; ++c) {
-                auto at = [&](uint32_t dx, uint32_t dy) {
-                    return level[((size_t(2 * y + dy) * size) + 2 * x + dx) * 4 + c];
-                };
-                uint8_t* dst = &out[(size_t(y) * half + x) * 4 + c];
-                if (c == 3) {
-                    *dst = uint8_t((at(0, 0) + at(1, 0) + at(0, 1) + at(1, 1) + 2) / 4);
-                    continue;
-                }
-                *dst = toSrgb(0.25f * (linear[at(0, 0)] + linear[at(1, 0)] + linear[at(0, 1)] + linear[at(1, 1)]));
-            }
-    return out;
-}
-
 } // namespace
 
 Result<DetailTextureArray> DetailTextureArray::create(gpu::Device& device, std::span<const Rgba8Image> layers) {
@@ -72,11 +46,8 @@ Result<DetailTextureArray> DetailTextureArray::create(gpu::Device& device, std::
                         std::to_string(image.height), ", expected square power-of-two images of one size (",
                         std::to_string(size), "x", std::to_string(size), ")");
     }
-    std::array<float, 256> linear{};
-    for (uint32_t v = 0; v < 256; ++v) linear[v] = toLinear(uint8_t(v));
 
-    uint32_t mips = 1;
-    while ((size >> (mips - 1)) > 1) ++mips;
+    const uint32_t mips = core::mipLevelCount(size, size);
     // Every level of every layer, packed level by level, layer by layer.
     std::vector<std::byte> texels;
     std::vector<VkBufferImageCopy> regions;
@@ -92,10 +63,10 @@ Result<DetailTextureArray> DetailTextureArray::create(gpu::Device& device, std::
             regions.push_back(region);
             const auto* bytes = reinterpret_cast<const std::byte*>(level.data());
             texels.insert(texels.end(), bytes, bytes + level.size());
-            if (side > 1) level = halve(level, side, linear);
+            if (side > 1) level = core::halveRgba8(level, side, side, core::MipEncoding::Srgb);
         }
         // The last level is the layer's 1x1 average.
-        array.averages[layer] = glm::vec4(linear[level[0]], linear[level[1]], linear[level[2]], 1.0f);
+        array.averages[layer] = glm::vec4(toLinear(level[0]), toLinear(level[1]), toLinear(level[2]), 1.0f);
     }
     gpu::ImageDesc desc;
     desc.width = size;

@@ -1,5 +1,7 @@
 #include "common/GpuCharacter.h"
 
+#include "tessera/core/MipChain.h"
+
 #include "tessera/character/CharacterAsset.h"
 
 #include <algorithm>
@@ -25,6 +27,41 @@ gpu::Image makeImage(gpu::Device& device, const TextureImage& texture, VkFormat 
     return image;
 }
 
+// An RGBA8 map with its whole mip chain (core::halveRgba8): a creature a few
+// dozen pixels tall samples a 1,024-texel map at a sixteenth of its size or
+// less, which without mips aliases on any device and, on a CPU rasterizer,
+// reads texels scattered over the whole image.
+gpu::Image makeMippedImage(gpu::Device& device, const TextureImage& texture, core::MipEncoding encoding,
+                           const std::string& name) {
+    gpu::ImageDesc desc;
+    desc.width = texture.width;
+    desc.height = texture.height;
+    desc.format = VK_FORMAT_R8G8B8A8_UNORM;
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    desc.mipLevels = core::mipLevelCount(texture.width, texture.height);
+    desc.name = name;
+    std::vector<std::byte> texels;
+    std::vector<VkBufferImageCopy> regions;
+    std::vector<uint8_t> level = texture.bytes;
+    uint32_t w = texture.width, h = texture.height;
+    for (uint32_t mip = 0; mip < desc.mipLevels; ++mip) {
+        VkBufferImageCopy region{};
+        region.bufferOffset = texels.size();
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, 0, 1};
+        region.imageExtent = {w, h, 1};
+        regions.push_back(region);
+        const auto* bytes = reinterpret_cast<const std::byte*>(level.data());
+        texels.insert(texels.end(), bytes, bytes + level.size());
+        if (mip + 1 == desc.mipLevels) break;
+        level = core::halveRgba8(level, w, h, encoding);
+        w = std::max(1u, w / 2);
+        h = std::max(1u, h / 2);
+    }
+    gpu::Image image(device, desc);
+    image.upload(texels, regions, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    return image;
+}
+
 // A 1x1 stand-in for a map the asset lacks, so every draw binds the same
 // layout: mid-grey albedo, the flat tangent-space normal, zero displacement.
 TextureImage constantTexture(TextureFormat format, std::initializer_list<uint8_t> bytes) {
@@ -36,7 +73,10 @@ TextureImage constantTexture(TextureFormat format, std::initializer_list<uint8_t
 }
 
 uint64_t textureBytes(const gpu::Image& image, uint32_t bytesPerTexel) {
-    return uint64_t(image.width()) * image.height() * bytesPerTexel;
+    uint64_t bytes = 0;
+    for (uint32_t mip = 0; mip < image.mipLevels(); ++mip)
+        bytes += uint64_t(std::max(1u, image.width() >> mip)) * std::max(1u, image.height() >> mip) * bytesPerTexel;
+    return bytes;
 }
 
 } // namespace
@@ -119,10 +159,12 @@ Result<std::unique_ptr<GpuCharacter>> GpuCharacter::create(gpu::Device& device, 
     // target, no output transfer), as the terrain's colours are; decoding
     // the albedo to linear here would darken characters against the terrain.
     c->mHasNormalMap = usable(asset.normalMap, TextureFormat::Rgba8);
-    c->mBaseColor = makeImage(device, usable(asset.baseColor, TextureFormat::Rgba8) ? *asset.baseColor : grey,
-                              VK_FORMAT_R8G8B8A8_UNORM, name + ".baseColor");
-    c->mNormalMap = makeImage(device, usable(asset.normalMap, TextureFormat::Rgba8) ? *asset.normalMap : flat,
-                              VK_FORMAT_R8G8B8A8_UNORM, name + ".normalMap");
+    // Mips of the base colour averaged in linear light (its bytes are sRGB,
+    // glTF's rule), of the normal map as stored (the shader normalises).
+    c->mBaseColor = makeMippedImage(device, usable(asset.baseColor, TextureFormat::Rgba8) ? *asset.baseColor : grey,
+                                    core::MipEncoding::Srgb, name + ".baseColor");
+    c->mNormalMap = makeMippedImage(device, usable(asset.normalMap, TextureFormat::Rgba8) ? *asset.normalMap : flat,
+                                    core::MipEncoding::Linear, name + ".normalMap");
     const bool displaced = asset.displacement && usable(std::optional<TextureImage>(asset.displacement->image),
                                                         TextureFormat::R16);
     c->mHasDisplacement = displaced;
@@ -132,7 +174,12 @@ Result<std::unique_ptr<GpuCharacter>> GpuCharacter::create(gpu::Device& device, 
     }
     c->mDisplacement = makeImage(device, displaced ? asset.displacement->image : zero, VK_FORMAT_R16_UNORM,
                                  name + ".displacementMap");
-    c->mSampler = gpu::Sampler(device, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, name + ".sampler");
+    // Within the nearest mip on a CPU rasterizer (half the texels trilinear
+    // filtering reads; docs/LOOKS.md, "Detail textures on a CPU rasterizer"),
+    // trilinear on a GPU. The displacement map is read at mip 0 only.
+    c->mSampler = gpu::Sampler(device, VK_FILTER_LINEAR,
+                               device.features().isCpu ? VK_SAMPLER_MIPMAP_MODE_NEAREST : VK_SAMPLER_MIPMAP_MODE_LINEAR,
+                               VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, name + ".sampler");
     c->mStaticBytes = vertexBytes + c->mIndices.size() + textureBytes(c->mBaseColor, 4) +
                       textureBytes(c->mNormalMap, 4) + textureBytes(c->mDisplacement, 2);
     return c;
