@@ -1,6 +1,6 @@
 #include "common/DetailTextureArray.h"
 
-#include "tessera/core/MipChain.h"
+#include "common/MipImage.h"
 #include "tessera/shaders/TerrainUniforms.h"
 
 #include <algorithm>
@@ -47,37 +47,17 @@ Result<DetailTextureArray> DetailTextureArray::create(gpu::Device& device, std::
                         std::to_string(size), "x", std::to_string(size), ")");
     }
 
-    const uint32_t mips = core::mipLevelCount(size, size);
-    // Every level of every layer, packed level by level, layer by layer.
-    std::vector<std::byte> texels;
-    std::vector<VkBufferImageCopy> regions;
+    std::vector<std::span<const uint8_t>> levels;
+    for (const Rgba8Image& image : layers) levels.emplace_back(image.pixels);
+    std::vector<std::array<uint8_t, 4>> smallest;
     DetailTextureArray array;
+    array.image = makeMippedRgba8(device, levels, size, size, VK_FORMAT_R8G8B8A8_SRGB, core::MipEncoding::Srgb,
+                                  "terrain.detailTextures", &smallest);
+    // Each layer's 1x1 level is its average.
     for (uint32_t layer = 0; layer < TS_DETAIL_LAYERS; ++layer) {
-        std::vector<uint8_t> level = layers[layer].pixels;
-        for (uint32_t mip = 0; mip < mips; ++mip) {
-            const uint32_t side = std::max(1u, size >> mip);
-            VkBufferImageCopy region{};
-            region.bufferOffset = texels.size();
-            region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, layer, 1};
-            region.imageExtent = {side, side, 1};
-            regions.push_back(region);
-            const auto* bytes = reinterpret_cast<const std::byte*>(level.data());
-            texels.insert(texels.end(), bytes, bytes + level.size());
-            if (side > 1) level = core::halveRgba8(level, side, side, core::MipEncoding::Srgb);
-        }
-        // The last level is the layer's 1x1 average.
-        array.averages[layer] = glm::vec4(toLinear(level[0]), toLinear(level[1]), toLinear(level[2]), 1.0f);
+        const auto& c = smallest[layer];
+        array.averages[layer] = glm::vec4(toLinear(c[0]), toLinear(c[1]), toLinear(c[2]), 1.0f);
     }
-    gpu::ImageDesc desc;
-    desc.width = size;
-    desc.height = size;
-    desc.format = VK_FORMAT_R8G8B8A8_SRGB;
-    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    desc.mipLevels = mips;
-    desc.arrayLayers = TS_DETAIL_LAYERS;
-    desc.name = "terrain.detailTextures";
-    array.image = gpu::Image(device, desc);
-    array.image.upload(texels, regions, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     return array;
 }
 

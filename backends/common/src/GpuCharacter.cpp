@@ -1,6 +1,6 @@
 #include "common/GpuCharacter.h"
 
-#include "tessera/core/MipChain.h"
+#include "common/MipImage.h"
 
 #include "tessera/character/CharacterAsset.h"
 
@@ -27,39 +27,14 @@ gpu::Image makeImage(gpu::Device& device, const TextureImage& texture, VkFormat 
     return image;
 }
 
-// An RGBA8 map with its whole mip chain (core::halveRgba8): a creature a few
-// dozen pixels tall samples a 1,024-texel map at a sixteenth of its size or
-// less, which without mips aliases on any device and, on a CPU rasterizer,
-// reads texels scattered over the whole image.
+// An RGBA8 map with its whole mip chain: a creature a few dozen pixels tall
+// samples a 1,024-texel map at a sixteenth of its size or less, which
+// without mips aliases on any device and, on a CPU rasterizer, reads texels
+// scattered over the whole image.
 gpu::Image makeMippedImage(gpu::Device& device, const TextureImage& texture, core::MipEncoding encoding,
                            const std::string& name) {
-    gpu::ImageDesc desc;
-    desc.width = texture.width;
-    desc.height = texture.height;
-    desc.format = VK_FORMAT_R8G8B8A8_UNORM;
-    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    desc.mipLevels = core::mipLevelCount(texture.width, texture.height);
-    desc.name = name;
-    std::vector<std::byte> texels;
-    std::vector<VkBufferImageCopy> regions;
-    std::vector<uint8_t> level = texture.bytes;
-    uint32_t w = texture.width, h = texture.height;
-    for (uint32_t mip = 0; mip < desc.mipLevels; ++mip) {
-        VkBufferImageCopy region{};
-        region.bufferOffset = texels.size();
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, 0, 1};
-        region.imageExtent = {w, h, 1};
-        regions.push_back(region);
-        const auto* bytes = reinterpret_cast<const std::byte*>(level.data());
-        texels.insert(texels.end(), bytes, bytes + level.size());
-        if (mip + 1 == desc.mipLevels) break;
-        level = core::halveRgba8(level, w, h, encoding);
-        w = std::max(1u, w / 2);
-        h = std::max(1u, h / 2);
-    }
-    gpu::Image image(device, desc);
-    image.upload(texels, regions, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    return image;
+    const std::span<const uint8_t> level0[1] = {texture.bytes};
+    return makeMippedRgba8(device, level0, texture.width, texture.height, VK_FORMAT_R8G8B8A8_UNORM, encoding, name);
 }
 
 // A 1x1 stand-in for a map the asset lacks, so every draw binds the same
