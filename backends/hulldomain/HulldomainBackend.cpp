@@ -143,27 +143,32 @@ protected:
         if (!continuous) mFactorPass.record(*mFrame, terrain, tessUniforms, terrainPush(terrain),
                                              VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT);
 
-        ensureMainPass();
-        gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");
-        if (draw.visiblePatches.empty()) return;
-        VkCommandBuffer cmd = mFrame->cmd();
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines.get(mFrameInfo.wireframe).handle());
+        // The patch stream is host memory of this frame slot: written now,
+        // drawn when the main pass opens (drawInMainPass).
         const uint32_t slot = mFrame->slot();
-        const VkDescriptorBufferInfo tessInfo = tessUniforms.descriptor();
-        const VkDescriptorBufferInfo edgeLevels{terrain.edgeLevels(slot).handle(), 0, VK_WHOLE_SIZE};
-        const VkDescriptorBufferInfo patchLevels{terrain.patchLevels(slot).handle(), 0, VK_WHOLE_SIZE};
-        const VkWriteDescriptorSet writes[3] = {
-            bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tessInfo),
-            bufferWrite(TS_BINDING_EDGE_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &edgeLevels),
-            bufferWrite(TS_BINDING_PATCH_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &patchLevels)};
-        pushTerrainDescriptors(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, terrain, writes);
-        gpu::Buffer& patchStream = terrain.writeVisiblePatches(slot, draw.visiblePatches);
-        const VkBuffer buffers[1] = {patchStream.handle()};
-        const VkDeviceSize offsets[1] = {0};
-        vkCmdBindVertexBuffers(cmd, 0, 1, buffers, offsets);
-        vkCmdDraw(cmd, 1, static_cast<uint32_t>(draw.visiblePatches.size()), 0, 0);
-        mReport.terrainPatchesDrawn += static_cast<uint32_t>(draw.visiblePatches.size());
-        ++mReport.passes;
+        const auto patches = static_cast<uint32_t>(draw.visiblePatches.size());
+        const VkBuffer patchStream =
+            patches == 0 ? VK_NULL_HANDLE : terrain.writeVisiblePatches(slot, draw.visiblePatches).handle();
+        drawInMainPass([this, &terrain, continuous, tessUniforms, slot, patches, patchStream] {
+            ensureMainPass();
+            gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");
+            if (patches == 0) return;
+            VkCommandBuffer cmd = mFrame->cmd();
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines.get(mFrameInfo.wireframe).handle());
+            const VkDescriptorBufferInfo tessInfo = tessUniforms.descriptor();
+            const VkDescriptorBufferInfo edgeLevels{terrain.edgeLevels(slot).handle(), 0, VK_WHOLE_SIZE};
+            const VkDescriptorBufferInfo patchLevels{terrain.patchLevels(slot).handle(), 0, VK_WHOLE_SIZE};
+            const VkWriteDescriptorSet writes[3] = {
+                bufferWrite(TS_BINDING_TESS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, &tessInfo),
+                bufferWrite(TS_BINDING_EDGE_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &edgeLevels),
+                bufferWrite(TS_BINDING_PATCH_LEVELS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, &patchLevels)};
+            pushTerrainDescriptors(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, terrain, writes);
+            const VkDeviceSize offset = 0;
+            vkCmdBindVertexBuffers(cmd, 0, 1, &patchStream, &offset);
+            vkCmdDraw(cmd, 1, patches, 0, 0);
+            mReport.terrainPatchesDrawn += patches;
+            ++mReport.passes;
+        });
     }
 
 private:

@@ -143,6 +143,7 @@ void BasicTerrainBackend::beginFrame(const backend::FrameInfo& frame) {
     mMainPassStarted = false;
     mResolveTerrain = nullptr;
     mPendingTerrains.clear();
+    mMainPassDraws.clear();
     beginTechniqueFrame();
 }
 
@@ -174,6 +175,18 @@ void BasicTerrainBackend::ensureMainPass() {
     }
     mMainPassOpen = true;
     mMainPassStarted = true;
+    // The draws that waited for it, in the order they came (each may call
+    // ensureMainPass again: it is open now).
+    std::vector<std::function<void()>> waiting;
+    waiting.swap(mMainPassDraws);
+    for (auto& draw : waiting) draw();
+}
+
+void BasicTerrainBackend::drawInMainPass(std::function<void()> draw) {
+    // A GPU runs the passes between concurrently anyway: there the frame
+    // keeps the order it is recorded in.
+    if (mMainPassOpen || !mDevice->features().isCpu) draw();
+    else mMainPassDraws.push_back(std::move(draw));
 }
 
 void BasicTerrainBackend::suspendMainPass() {
@@ -203,6 +216,13 @@ void BasicTerrainBackend::drawTerrain(backend::TerrainHandle handle, const backe
 }
 
 void BasicTerrainBackend::recordTerrainDraw(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw) {
+    // A technique's factor passes reuse one set of buffers per frame slot:
+    // an earlier terrain's draw still waiting for the main pass reads them,
+    // so it is recorded before they are written again.
+    if (!mMainPassDraws.empty()) {
+        ensureMainPass();
+        suspendMainPass();
+    }
     // One terrain per frame is resolved (its pixels carry no terrain id);
     // from a second one on, terrains are shaded forward.
     if (mDeferTerrain && !mResolveTerrain)

@@ -164,23 +164,25 @@ void EmulatedTerrainBackend::drawTessellated(GpuTerrain& terrain, const backend:
     if (!draw.visiblePatches.empty()) source = recordFactorPasses(terrain, draw, tessUniforms);
     mReport.intermediateBytes += patternBytes() + factorPassBytes();
 
-    ensureMainPass();
-    gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");
-    if (draw.visiblePatches.empty() || source.records == VK_NULL_HANDLE) return;
-    VkCommandBuffer cmd = mFrame->cmd();
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines.get(mFrameInfo.wireframe).handle());
-    const VkWriteDescriptorSet records = texelWrite(TS_BINDING_EMU_RECORDS, &source.records);
-    pushTerrainDescriptors(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, terrain, {&records, 1});
-    vkCmdPushConstants(cmd, mLayout.handle(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(uint32_t), &source.capacity);
-    const VkBuffer patterns = mPatternVertices.handle();
-    const VkDeviceSize offset = 0;
-    vkCmdBindVertexBuffers(cmd, 0, 1, &patterns, &offset);
-    // The emulated unit's output: five pattern pieces per superprimitive,
-    // each an indirect command the backend's own passes wrote on the GPU.
-    const uint32_t commands = source.commandCount ? source.commandCount : source.capacity * TS_EMU_PIECES;
-    vkCmdDrawIndirect(cmd, source.commands, source.commandsOffset, commands, sizeof(VkDrawIndirectCommand));
-    mReport.terrainPatchesDrawn += static_cast<uint32_t>(draw.visiblePatches.size());
-    ++mReport.passes;
+    drawInMainPass([this, &terrain, source, continuous, patches = draw.visiblePatches.size()] {
+        ensureMainPass();
+        gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");
+        if (patches == 0 || source.records == VK_NULL_HANDLE) return;
+        VkCommandBuffer cmd = mFrame->cmd();
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines.get(mFrameInfo.wireframe).handle());
+        const VkWriteDescriptorSet records = texelWrite(TS_BINDING_EMU_RECORDS, &source.records);
+        pushTerrainDescriptors(VK_PIPELINE_BIND_POINT_GRAPHICS, mLayout, terrain, {&records, 1});
+        vkCmdPushConstants(cmd, mLayout.handle(), VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(uint32_t), &source.capacity);
+        const VkBuffer patterns = mPatternVertices.handle();
+        const VkDeviceSize offset = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, &patterns, &offset);
+        // The emulated unit's output: five pattern pieces per superprimitive,
+        // each an indirect command the backend's own passes wrote on the GPU.
+        const uint32_t commands = source.commandCount ? source.commandCount : source.capacity * TS_EMU_PIECES;
+        vkCmdDrawIndirect(cmd, source.commands, source.commandsOffset, commands, sizeof(VkDrawIndirectCommand));
+        mReport.terrainPatchesDrawn += static_cast<uint32_t>(patches);
+        ++mReport.passes;
+    });
 }
 
 } // namespace tessera::backends
