@@ -144,15 +144,12 @@ protected:
                                              VK_PIPELINE_STAGE_2_TESSELLATION_CONTROL_SHADER_BIT);
 
         // The patch stream is host memory of this frame slot: written now,
-        // drawn when the main pass opens (drawInMainPass).
+        // drawn when the main pass opens (drawTerrainInMainPass).
         const uint32_t slot = mFrame->slot();
         const auto patches = static_cast<uint32_t>(draw.visiblePatches.size());
         const VkBuffer patchStream =
             patches == 0 ? VK_NULL_HANDLE : terrain.writeVisiblePatches(slot, draw.visiblePatches).handle();
-        drawInMainPass([this, &terrain, continuous, tessUniforms, slot, patches, patchStream] {
-            ensureMainPass();
-            gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");
-            if (patches == 0) return;
+        drawTerrainInMainPass(settings.mode, patches, [this, &terrain, tessUniforms, slot, patches, patchStream] {
             VkCommandBuffer cmd = mFrame->cmd();
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines.get(mFrameInfo.wireframe).handle());
             const VkDescriptorBufferInfo tessInfo = tessUniforms.descriptor();
@@ -166,8 +163,7 @@ protected:
             const VkDeviceSize offset = 0;
             vkCmdBindVertexBuffers(cmd, 0, 1, &patchStream, &offset);
             vkCmdDraw(cmd, 1, patches, 0, 0);
-            mReport.terrainPatchesDrawn += patches;
-            ++mReport.passes;
+            return true;
         });
     }
 

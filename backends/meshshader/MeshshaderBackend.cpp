@@ -142,17 +142,15 @@ protected:
             mFactorPass.record(*mFrame, terrain, tessUniforms, terrainPush(terrain),
                                VK_PIPELINE_STAGE_2_TASK_SHADER_BIT_EXT);
 
-        // Drawn when the main pass opens (drawInMainPass): its own copy of
-        // the patches, which may outlive the caller's.
-        drawInMainPass([this, &terrain, continuous, tessUniforms,
-                        patches = std::vector<uint32_t>(draw.visiblePatches.begin(), draw.visiblePatches.end())] {
-            ensureMainPass();
-            gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");
-            if (patches.empty()) return;
-            mTerrainPass.record(*mFrame, terrain, patches, tessUniforms, terrainPush(terrain), mFrameInfo.wireframe);
-            mReport.terrainPatchesDrawn += static_cast<uint32_t>(patches.size());
-            ++mReport.passes;
-        });
+        // Drawn when the main pass opens (drawTerrainInMainPass): its own
+        // copy of the patches, which may outlive the caller's.
+        drawTerrainInMainPass(settings.mode, static_cast<uint32_t>(draw.visiblePatches.size()),
+                              [this, &terrain, tessUniforms,
+                               patches = std::vector<uint32_t>(draw.visiblePatches.begin(), draw.visiblePatches.end())] {
+                                  mTerrainPass.record(*mFrame, terrain, patches, tessUniforms, terrainPush(terrain),
+                                                      mFrameInfo.wireframe);
+                                  return true;
+                              });
     }
 
 private:

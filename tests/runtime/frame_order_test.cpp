@@ -1,6 +1,6 @@
 // The frame's order on a CPU rasterizer (docs/BACKENDS.md, "Frame order on a
 // CPU rasterizer"): the terrain's main-pass draw waits for the crowd's own
-// passes (BasicTerrainBackend::drawInMainPass), so that lavapipe bins the
+// passes (BasicTerrainBackend::drawTerrainInMainPass), so that lavapipe bins the
 // crowd's tiers while it rasterizes the terrain instead of after. Read from
 // the GPU passes the profiler records, in the order they were recorded; one
 // backend per technique's terrain draw (r2vb draws it as streamout does).

@@ -182,7 +182,15 @@ void BasicTerrainBackend::ensureMainPass() {
     for (auto& draw : waiting) draw();
 }
 
-void BasicTerrainBackend::drawInMainPass(std::function<void()> draw) {
+void BasicTerrainBackend::drawTerrainInMainPass(backend::TerrainMode mode, uint32_t patches,
+                                                std::function<bool()> record) {
+    auto draw = [this, mode, patches, record = std::move(record)] {
+        ensureMainPass();
+        gpu::PassScope pass(*mFrame, mode == backend::TerrainMode::Continuous ? "terrain.continuous" : "terrain.adaptive");
+        if (patches == 0 || !record()) return;
+        mReport.terrainPatchesDrawn += patches;
+        ++mReport.passes;
+    };
     // A GPU runs the passes between concurrently anyway: there the frame
     // keeps the order it is recorded in.
     if (mMainPassOpen || !mDevice->features().isCpu) draw();

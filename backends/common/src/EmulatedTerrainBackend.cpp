@@ -158,16 +158,14 @@ uint64_t EmulatedTerrainBackend::patternBytes() const {
 }
 
 void EmulatedTerrainBackend::drawTessellated(GpuTerrain& terrain, const backend::TerrainDrawInfo& draw) {
-    const bool continuous = draw.tessellation.mode == backend::TerrainMode::Continuous;
     const gpu::UniformSlice tessUniforms = pushTessUniforms(terrain, draw.tessellation, TS_EMU_MAX_LEVEL);
     EmulatedDrawSource source;
     if (!draw.visiblePatches.empty()) source = recordFactorPasses(terrain, draw, tessUniforms);
     mReport.intermediateBytes += patternBytes() + factorPassBytes();
 
-    drawInMainPass([this, &terrain, source, continuous, patches = draw.visiblePatches.size()] {
-        ensureMainPass();
-        gpu::PassScope pass(*mFrame, continuous ? "terrain.continuous" : "terrain.adaptive");
-        if (patches == 0 || source.records == VK_NULL_HANDLE) return;
+    const auto patches = static_cast<uint32_t>(draw.visiblePatches.size());
+    drawTerrainInMainPass(draw.tessellation.mode, patches, [this, &terrain, source] {
+        if (source.records == VK_NULL_HANDLE) return false;
         VkCommandBuffer cmd = mFrame->cmd();
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mPipelines.get(mFrameInfo.wireframe).handle());
         const VkWriteDescriptorSet records = texelWrite(TS_BINDING_EMU_RECORDS, &source.records);
@@ -180,8 +178,7 @@ void EmulatedTerrainBackend::drawTessellated(GpuTerrain& terrain, const backend:
         // each an indirect command the backend's own passes wrote on the GPU.
         const uint32_t commands = source.commandCount ? source.commandCount : source.capacity * TS_EMU_PIECES;
         vkCmdDrawIndirect(cmd, source.commands, source.commandsOffset, commands, sizeof(VkDrawIndirectCommand));
-        mReport.terrainPatchesDrawn += static_cast<uint32_t>(patches);
-        ++mReport.passes;
+        return true;
     });
 }
 

@@ -106,17 +106,18 @@ protected:
     void ensureMainPass();
     /// Closes the main pass if open, so an off-target pass can run.
     void suspendMainPass();
-    /// Records `draw` (main-pass commands that open it with ensureMainPass)
-    /// at once on a GPU or when the main pass is open; on a CPU rasterizer
-    /// otherwise first thing when the main pass next opens. The terrain's
-    /// draw waits there for the passes the crowd and characters record
-    /// before their own draws, so that all of the frame's off-target passes
-    /// come before its main pass. Why: lavapipe waits at every barrier until
-    /// everything it has binned is rasterized, so an off-target pass between
-    /// the terrain's draw and the crowd's held the crowd's vertex work until
-    /// the terrain was rasterized; in this order the two overlap
-    /// (docs/BACKENDS.md, "Frame order on a CPU rasterizer").
-    void drawInMainPass(std::function<void()> draw);
+    /// A terrain's draw in the main pass: GPU pass "terrain.continuous" or
+    /// "terrain.adaptive" by `mode`, in which `record` records the draw of
+    /// `patches` visible patches and says whether it drew (the report then
+    /// counts them). At once on a GPU or when the main pass is open; on a
+    /// CPU rasterizer otherwise first thing when the main pass next opens,
+    /// so the crowd's and characters' own passes come before it. Why:
+    /// lavapipe waits at every barrier until everything it has binned is
+    /// rasterized, so an off-target pass between the terrain's draw and the
+    /// crowd's held the crowd's vertex work until the terrain was
+    /// rasterized; in this order the two overlap (docs/BACKENDS.md, "Frame
+    /// order on a CPU rasterizer").
+    void drawTerrainInMainPass(backend::TerrainMode mode, uint32_t patches, std::function<bool()> record);
     /// Draws the visible patches of `terrain` as the untessellated control mesh.
     void drawControlMesh(GpuTerrain& terrain, std::span<const uint32_t> patches, const char* passName);
     /// Pushes the terrain's shared bindings (TerrainBindings.h) plus `extra`
@@ -173,7 +174,7 @@ private:
     GpuTerrain* mResolveTerrain = nullptr;
     /// This frame's terrain draws waiting for the casters (cascaded shadows).
     std::vector<PendingTerrainDraw> mPendingTerrains;
-    /// Main-pass draws waiting for it to open (drawInMainPass).
+    /// Terrain draws waiting for the main pass to open (drawTerrainInMainPass).
     std::vector<std::function<void()>> mMainPassDraws;
     /// This frame's terrain is shaded deferred (FrameInfo::terrainShading).
     bool mDeferTerrain = false;
