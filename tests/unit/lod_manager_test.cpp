@@ -380,6 +380,35 @@ TEST(LodManager, SameAnswerOnAnyThreadCount) {
     }
 }
 
+// A flight over a crowd behind a ridge (fades, budget demotions, impostors,
+// horizon culling): 6,000 instances over 120 x 120 m, ids shuffled.
+std::vector<LodInstance> ridgeCrowd() {
+    Random random(17);
+    std::vector<LodInstance> instances;
+    for (uint32_t i = 0; i < 6000; ++i)
+        instances.push_back({glm::vec4(random.range(-60.0f, 60.0f), 0.0f, random.range(-60.0f, 60.0f), kRadius),
+                             (i * 37) % 6000, 0});
+    return instances;
+}
+
+// The flight's view at `frame` of 120, over 16 x 16 cells of 8 m from
+// (-64, -64) with a ridge 3 m high along z = 0.
+lod::LodView ridgeView(int frame) {
+    scene::Camera c;
+    const float progress = float(frame) / 120.0f;
+    c.setPosition({-50.0f + 100.0f * progress, 1.7f, 30.0f - 40.0f * progress});
+    c.setYaw(-1.2f + 2.4f * progress);
+    static const std::vector<float> lowest = [] {
+        std::vector<float> cells(16 * 16, -1.0f);
+        for (uint32_t x = 0; x < 16; ++x) cells[8 * 16 + x] = 3.0f;
+        return cells;
+    }();
+    lod::LodView v = view(c);
+    v.occluders = lowest;
+    v.occluderGrid = glm::vec4(-64.0f, -64.0f, 8.0f, 16.0f);
+    return v;
+}
+
 TEST(LodManager, WithoutListsEveryCountCutAndStateIsTheSame) {
     // The runtime runs the manager without its per-tier lists; a camera
     // flying over a crowd behind a ridge (fades, budget demotions, impostors,
@@ -389,23 +418,10 @@ TEST(LodManager, WithoutListsEveryCountCutAndStateIsTheSame) {
     LodManager with(policy, 2), without(policy, 2);
     without.keepLists(false);
     const auto characters = creature();
-    Random random(17);
-    std::vector<LodInstance> instances;
-    for (uint32_t i = 0; i < 6000; ++i)
-        instances.push_back({glm::vec4(random.range(-60.0f, 60.0f), 0.0f, random.range(-60.0f, 60.0f), kRadius),
-                             (i * 37) % 6000, 0});
-    // 16 x 16 cells of 8 m from (-64, -64): a ridge 3 m high along z = 0.
-    std::vector<float> lowest(16 * 16, -1.0f);
-    for (uint32_t x = 0; x < 16; ++x) lowest[8 * 16 + x] = 3.0f;
+    const std::vector<LodInstance> instances = ridgeCrowd();
     uint32_t hidden = 0, impostors = 0;
     for (int frame = 0; frame < 120; ++frame) {
-        scene::Camera c;
-        const float progress = float(frame) / 120.0f;
-        c.setPosition({-50.0f + 100.0f * progress, 1.7f, 30.0f - 40.0f * progress});
-        c.setYaw(-1.2f + 2.4f * progress);
-        lod::LodView v = view(c);
-        v.occluders = lowest;
-        v.occluderGrid = glm::vec4(-64.0f, -64.0f, 8.0f, 16.0f);
+        const lod::LodView v = ridgeView(frame);
         const lod::LodFrame& a = with.update(instances, characters, v);
         const lod::LodFrame& b = without.update(instances, characters, v);
         ASSERT_EQ(std::memcmp(&a.params, &b.params, sizeof a.params), 0) << "frame " << frame;
@@ -427,6 +443,61 @@ TEST(LodManager, WithoutListsEveryCountCutAndStateIsTheSame) {
     }
     EXPECT_GT(hidden, 0u) << "the ridge hides part of the crowd";
     EXPECT_GT(impostors, 0u);
+}
+
+TEST(LodManager, UntestedImpostorsChangeNoParameterNorAnyMeshTier) {
+    // The runtime tests only the instances a budget counts against the
+    // horizon (the backends cull the impostors themselves): the same flight
+    // over a crowd behind a ridge gives the reference's parameters (all the
+    // GPU reads), mesh tiers' counts and hidden counts every frame; the
+    // impostors the ridge hides count as impostors in view, and countHidden
+    // still finds every hidden instance.
+    LodPolicy policy = LodPolicy::forDevice(lod::DeviceClass::Cpu);
+    policy.budget.maxFarInstances = 100;
+    LodManager reference(policy, 2), runtime(policy, 2);
+    runtime.keepLists(false);
+    runtime.testEveryHorizon(false);
+    const auto characters = creature();
+    const std::vector<LodInstance> instances = ridgeCrowd();
+    uint32_t untested = 0, hiddenImpostors = 0, hiddenMeshes = 0;
+    for (int frame = 0; frame < 120; ++frame) {
+        const lod::LodView v = ridgeView(frame);
+        const lod::LodFrame& a = reference.update(instances, characters, v);
+        const lod::LodFrame& b = runtime.update(instances, characters, v);
+        ASSERT_EQ(std::memcmp(&a.params, &b.params, sizeof a.params), 0) << "frame " << frame;
+        // (Not their fading counts: an instance coming out from behind the
+        // ridge into a mesh tier pops in for the reference, and fades in
+        // from the impostor the runtime took it for; on the GPU, whose own
+        // states are the reference's, it pops in.)
+        for (uint32_t t = TS_LOD_NEAR; t <= TS_LOD_FAR; ++t) {
+            EXPECT_EQ(a.counts[t].instances, b.counts[t].instances) << "frame " << frame << " tier " << t;
+            EXPECT_EQ(a.counts[t].triangles, b.counts[t].triangles);
+            EXPECT_EQ(a.hidden[t], b.hidden[t]);
+            hiddenMeshes += a.hidden[t];
+        }
+        EXPECT_EQ(a.pastFarBudget, b.pastFarBudget);
+        EXPECT_EQ(a.budgetDemoted, b.budgetDemoted);
+        EXPECT_EQ(a.untested, 0u);
+        EXPECT_EQ(b.inView, a.inView + a.hidden[TS_LOD_IMPOSTOR] - b.hidden[TS_LOD_IMPOSTOR]);
+        untested += b.untested;
+        hiddenImpostors += a.hidden[TS_LOD_IMPOSTOR] - b.hidden[TS_LOD_IMPOSTOR];
+        // The same instances hidden, whichever manager counts them.
+        uint32_t hiddenA = 0, hiddenB = 0;
+        for (uint32_t t = 0; t < lod::kTierCount; ++t) hiddenA += a.hidden[t];
+        for (uint32_t h : runtime.countHidden(instances)) hiddenB += h;
+        EXPECT_EQ(hiddenA, hiddenB) << "frame " << frame;
+        // Wherever either holds a mesh tier, both hold the same one.
+        for (const LodInstance& instance : instances) {
+            const uint32_t ta = shader::tsLodStateTier(reference.state(instance.id));
+            const uint32_t tb = shader::tsLodStateTier(runtime.state(instance.id));
+            if (ta <= TS_LOD_FAR || tb <= TS_LOD_FAR) {
+                ASSERT_EQ(ta, tb) << "frame " << frame;
+            }
+        }
+    }
+    EXPECT_GT(untested, 0u);
+    EXPECT_GT(hiddenImpostors, 0u) << "impostors the ridge hides, which the runtime leaves to the backends";
+    EXPECT_GT(hiddenMeshes, 0u) << "mesh candidates the ridge hides, which both cull";
 }
 
 TEST(LodManager, InstancesInAnyOrderKeepTheirStatesById) {

@@ -37,7 +37,8 @@ struct CrowdRenderRow {
     std::array<double, lod::kTierCount> tierInstances{};
     std::array<double, lod::kTierCount> tierTriangles{};
     /// Per tier: agents in the frustum the terrain hid (horizon culling, the
-    /// CPU reference's counts, by the tier their size would have taken).
+    /// CPU reference's counts, by the tier their size would take), counted
+    /// on the row's last frame.
     std::array<double, lod::kTierCount> tierHidden{};
     uint64_t crowdBytes = 0; ///< device memory of the crowd (FrameReport::crowdBytes)
     /// GPU passes whose timestamps cannot be trusted against the frame

@@ -20,8 +20,10 @@ Result<std::unique_ptr<InstancedCrowd>> InstancedCrowd::create(const CharacterAs
         parts.push_back(character::bakeAnimation(asset.asset));
     }
     crowd->mBaked = character::combine(parts);
-    // A million agents' lists cost milliseconds a frame; only --crowd-tiers reads them.
-    crowd->mLod.keepLists(false);
+    // A million agents' lists cost milliseconds a frame, and the horizon
+    // test of the impostors most of the manager's time; only --crowd-tiers
+    // reads them (the backends cull the impostors themselves).
+    crowd->keepLists(false);
     return crowd;
 }
 

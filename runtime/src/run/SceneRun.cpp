@@ -187,13 +187,16 @@ void SceneRun::renderFrame(uint32_t frame, bool readback) {
         if (mInstanced) {
             crowdDraw = mInstanced->drawInfo(mOptions.displacement, mOptions.lodColors);
             // The agents the terrain hid this frame, by the tier their size
-            // would have taken (the CPU reference's; every backend culls the same).
+            // would have taken (the CPU reference's; every backend culls the
+            // same). The impostors' only where the manager tested them all
+            // (--crowd-tiers): otherwise the backends alone cull them.
             static const char* const kHidden[lod::kTierCount] = {"crowd near hidden", "crowd middle hidden",
                                                                  "crowd far hidden", "crowd impostor hidden"};
             auto& profiler = profiler::Profiler::global();
+            const lod::LodFrame& lod = mInstanced->lod();
             for (uint32_t t = 0; t < lod::kTierCount; ++t)
-                profiler.recordCounter({kHidden[t], uint64_t(frame), profiler.nowNs(),
-                                        double(mInstanced->lod().hidden[size_t(t)])});
+                if (t != TS_LOD_IMPOSTOR || lod.untested == 0)
+                    profiler.recordCounter({kHidden[t], uint64_t(frame), profiler.nowNs(), double(lod.hidden[t])});
         }
     }
     std::span<const SubdivDraw> surfaceDraws;

@@ -120,7 +120,7 @@ const LodFrame& LodManager::update(std::span<const LodInstance> instances, std::
     LodFrame& f = mFrame;
     for (auto& tier : f.tiers) tier.clear();
     f.counts = {};
-    f.inView = f.pastFarBudget = f.budgetDemoted = f.tierChanges = 0;
+    f.inView = f.pastFarBudget = f.budgetDemoted = f.tierChanges = f.untested = 0;
     f.hidden = {};
     shader::CrowdLodParams& p = f.params;
     for (size_t i = 0; i < 6; ++i) p.planes[i] = view.frustum.planes()[i];
@@ -159,24 +159,29 @@ void LodManager::classify(std::span<const LodInstance> instances) {
                 Seen& seen = mSeen[i];
                 seen.tier = TS_LOD_NONE;
                 seen.hidden = TS_LOD_NONE;
-                // Any tier but none marks it in view until its own is worked
-                // out below. A sphere that is not finite is never in view: the
-                // backends leave such an instance out (backend::crowdInstanceValid),
+                seen.tested = false;
+                // A sphere that is not finite is never in view: the backends
+                // leave such an instance out (backend::crowdInstanceValid),
                 // and its bounds would make the group's proof meaningless.
                 const glm::vec4& sphere = instances[i].sphere;
                 const bool finite = std::isfinite(sphere.x) && std::isfinite(sphere.y) && std::isfinite(sphere.z) &&
                                     std::isfinite(sphere.w) && sphere.w >= 0.0f;
-                seen.candidate = finite && shader::tsLodInFrustum(sphere, p) ? TS_LOD_IMPOSTOR : TS_LOD_NONE;
-                if (seen.candidate != TS_LOD_NONE) sight.add(sphere);
+                if (!finite || !shader::tsLodInFrustum(sphere, p)) {
+                    seen.candidate = TS_LOD_NONE;
+                    continue;
+                }
+                const uint32_t state = mSlotState[i];
+                seen.pixels = shader::tsLodPixels(sphere, p);
+                seen.candidate = shader::tsLodCandidate(seen.pixels, shader::tsLodStateTier(state), p);
+                seen.tested = mEveryHorizon || meetsTheBudgets(seen.candidate, state);
+                if (seen.tested) sight.add(sphere);
             }
             const GroupSight proof = sight.count ? mHorizon.proveGroup(sight, p) : GroupSight{};
             for (uint32_t i = group; i < end; ++i) {
                 Seen& seen = mSeen[i];
-                if (seen.candidate == TS_LOD_NONE) continue;
+                if (!seen.tested) continue;
                 const LodInstance& instance = instances[i];
                 const uint32_t state = mSlotState[i];
-                seen.pixels = shader::tsLodPixels(instance.sphere, p);
-                seen.candidate = shader::tsLodCandidate(seen.pixels, shader::tsLodStateTier(state), p);
                 if (mHorizon.behindTerrain(instance.sphere, p, proof)) {
                     seen.hidden = seen.candidate;
                     seen.candidate = TS_LOD_NONE;
@@ -189,6 +194,29 @@ void LodManager::classify(std::span<const LodInstance> instances) {
     // In instance order, as the chunks are.
     mBudgeted.clear();
     for (const std::vector<uint32_t>& chunk : mChunkBudgeted) mBudgeted.insert(mBudgeted.end(), chunk.begin(), chunk.end());
+}
+
+std::array<uint32_t, kTierCount> LodManager::countHidden(std::span<const LodInstance> instances) const {
+    const shader::CrowdLodParams& p = mFrame.params;
+    const uint32_t count = uint32_t(instances.size());
+    std::vector<std::array<uint32_t, kTierCount>> chunks((count + kGrain - 1) / kGrain);
+    core::parallelForRanges(count, kGrain, mThreads, [&](core::IndexRange range) {
+        std::array<uint32_t, kTierCount>& hidden = chunks[range.begin / kGrain];
+        hidden = {};
+        for (uint32_t i = range.begin; i < range.end; ++i) {
+            const glm::vec4& sphere = instances[i].sphere;
+            const bool finite = std::isfinite(sphere.x) && std::isfinite(sphere.y) && std::isfinite(sphere.z) &&
+                                std::isfinite(sphere.w) && sphere.w >= 0.0f;
+            if (!finite || !shader::tsLodInFrustum(sphere, p) || !mHorizon.behindTerrain(sphere, p))
+                continue;
+            const uint32_t last = i < mSlotState.size() ? shader::tsLodStateTier(mSlotState[i]) : TS_LOD_NONE;
+            ++hidden[shader::tsLodCandidate(shader::tsLodPixels(sphere, p), last, p)];
+        }
+    });
+    std::array<uint32_t, kTierCount> total{};
+    for (const auto& chunk : chunks)
+        for (uint32_t t = 0; t < kTierCount; ++t) total[t] += chunk[t];
+    return total;
 }
 
 void LodManager::fitBudget(std::span<const LodInstance> instances, std::span<const LodCharacter> characters) {
@@ -301,7 +329,7 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
     struct Chunk {
         std::array<std::vector<LodDraw>, kTierCount> tiers;
         std::array<LodTierCount, kTierCount> counts{};
-        uint32_t inView = 0, pastFar = 0, demoted = 0, changes = 0;
+        uint32_t inView = 0, pastFar = 0, demoted = 0, changes = 0, untested = 0;
         std::array<uint32_t, kTierCount> hidden{};
     };
     const uint32_t count = uint32_t(instances.size());
@@ -314,6 +342,7 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
             const Seen& seen = mSeen[i];
             const uint32_t old = mSlotState[i];
             if (seen.hidden != TS_LOD_NONE) ++chunk.hidden[seen.hidden];
+            if (seen.candidate != TS_LOD_NONE && !seen.tested) ++chunk.untested;
             if (seen.candidate == TS_LOD_NONE) {
                 mSlotState[i] = shader::tsLodStateNone();
                 continue;
@@ -356,6 +385,7 @@ void LodManager::advance(std::span<const LodInstance> instances, std::span<const
             f.counts[t].triangles += chunk.counts[t].triangles;
         }
         f.inView += chunk.inView;
+        f.untested += chunk.untested;
         for (uint32_t t = 0; t < kTierCount; ++t) f.hidden[t] += chunk.hidden[t];
         f.pastFarBudget += chunk.pastFar;
         f.budgetDemoted += chunk.demoted;

@@ -56,10 +56,20 @@ public:
     backend::CrowdDrawInfo drawInfo(bool displacement, bool lodColors) const;
 
     const lod::LodFrame& lod() const { return mLod.frame(); }
-    /// Whether select() fills the CPU reference's per-tier lists
-    /// (LodFrame::tiers; default: no, the counts and cuts come without
-    /// them). writeTiers needs them from the frame it writes.
-    void keepLists(bool keep) { mLod.keepLists(keep); }
+    /// Whether select() is the whole CPU reference: its per-tier lists
+    /// (LodFrame::tiers) and every agent in view tested against the horizon
+    /// (LodManager::testEveryHorizon). Default: no; the cuts every backend
+    /// reads and the mesh tiers' counts come without them, and the backends
+    /// cull the impostors themselves. writeTiers needs them from the frame
+    /// it writes.
+    void keepLists(bool keep) {
+        mLod.keepLists(keep);
+        mLod.testEveryHorizon(keep);
+    }
+    /// The agents in view the terrain hides this frame, by the tier their
+    /// size would take (the reference's count, whatever keepLists says;
+    /// the horizon test of every agent in view: a report's figure).
+    std::array<uint32_t, lod::kTierCount> countHidden() const { return mLod.countHidden(mLodInstances); }
     /// Writes `gpu` (a backend's lists, instance indices) and the CPU
     /// reference's last lists as agent ids per tier, sorted, to `path`
     /// (--crowd-tiers; keepLists must have been on); an error naming the

@@ -44,8 +44,12 @@ struct LodFrame {
     std::array<LodTierCount, kTierCount> counts{};
     uint32_t inView = 0;        ///< instances whose sphere meets the frustum, not behind the terrain
     /// Instances in the frustum that the terrain hides (tsLodBehindTerrain),
-    /// by the tier their size would have taken.
+    /// by the tier their size would have taken (of those tested: untested).
     std::array<uint32_t, kTierCount> hidden{};
+    /// Instances in the frustum not tested against the horizon (impostors by
+    /// their size that no budget counts; LodManager::testEveryHorizon),
+    /// counted in view: 0 when every instance is tested.
+    uint32_t untested = 0;
     /// In view and drawn as impostors only because the far tier's budget
     /// was spent (their size asked for a mesh).
     uint32_t pastFarBudget = 0;

@@ -44,6 +44,30 @@ public:
     /// only needs those skips a million-entry list for a million agents.
     void keepLists(bool keep) { mLists = keep; }
     bool keepsLists() const { return mLists; }
+    /// Whether every instance in the frustum is tested against the horizon
+    /// (default: yes), or only those a budget can count: a candidate for a
+    /// mesh tier, an incumbent of one, or a copy fading out of one. The rest
+    /// (an impostor by its size, no mesh copy fading) cannot change the
+    /// parameters, and every backend culls them itself on the GPU: the
+    /// parameters, the mesh tiers' instance and triangle counts and their
+    /// hidden counts are the same either way (not their fading counts: an
+    /// instance coming out from behind the terrain into a mesh tier fades
+    /// in from the impostor it was taken for, where the reference, and
+    /// every GPU, pops it in). Untested instances are counted as impostors in view
+    /// (LodFrame::untested), so the impostor tier's count, LodFrame::inView
+    /// and the state words of impostors the terrain hides are then not the
+    /// reference's (a state reads "impostor" where the reference's reads
+    /// "none"), nor is LodFrame::hidden's impostor count; countHidden gives
+    /// those on demand. At a million agents the test of the impostors was
+    /// nearly all of the manager's time (docs/CROWD.md 6.1).
+    void testEveryHorizon(bool every) { mEveryHorizon = every; }
+    bool testsEveryHorizon() const { return mEveryHorizon; }
+    /// The instances in the frustum the terrain hides, by the tier their
+    /// size would take from their current state: the reference's
+    /// LodFrame::hidden for the last update's view (its parameters and
+    /// horizon), whatever testEveryHorizon says. Changes no state. Costs the
+    /// horizon test of every instance in view (an untimed report's figure).
+    std::array<uint32_t, kTierCount> countHidden(std::span<const LodInstance> instances) const;
     /// The last update's answer.
     const LodFrame& frame() const { return mFrame; }
 
@@ -60,6 +84,7 @@ private:
         uint32_t candidate = TS_LOD_NONE; ///< TS_LOD_NONE: out of view
         uint32_t tier = TS_LOD_NONE;      ///< after the budget, filled tier by tier
         uint32_t hidden = TS_LOD_NONE;    ///< behind the terrain: the candidate it would have been
+        bool tested = false;              ///< in view and tested against the horizon
     };
 
     /// Puts each instance's state at its index (mSlotState), moving them
@@ -86,6 +111,7 @@ private:
     std::vector<uint32_t> mBudgeted;
     std::vector<std::vector<uint32_t>> mChunkBudgeted;
     bool mLists = true;
+    bool mEveryHorizon = true;
     /// Triangles of one cage triangle at each odd segment count 1..63 (the
     /// fractional-odd pattern's triangle count depends only on it).
     std::array<uint32_t, 64> mTrianglesPerCageTriangle{};
