@@ -26,6 +26,16 @@ bool continuesFadeFrom(uint32_t state, uint32_t tier) {
            shader::tsLodStateFade(state) >= 2u;
 }
 
+// Whether `sphere` meets the frustum. A sphere that is not finite is never
+// in view: the backends leave such an instance out
+// (backend::crowdInstanceValid), and its bounds would make a group's horizon
+// proof meaningless.
+bool inFrustum(const glm::vec4& sphere, const shader::CrowdLodParams& p) {
+    const bool finite = std::isfinite(sphere.x) && std::isfinite(sphere.y) && std::isfinite(sphere.z) &&
+                        std::isfinite(sphere.w) && sphere.w >= 0.0f;
+    return finite && shader::tsLodInFrustum(sphere, p);
+}
+
 // Whether an instance in view (its candidate after the horizon: not none)
 // can count against a budgeted tier's limits: as a candidate, an incumbent
 // or a fading copy. The rest (impostors staying impostors, most of a large
@@ -160,13 +170,8 @@ void LodManager::classify(std::span<const LodInstance> instances) {
                 seen.tier = TS_LOD_NONE;
                 seen.hidden = TS_LOD_NONE;
                 seen.tested = false;
-                // A sphere that is not finite is never in view: the backends
-                // leave such an instance out (backend::crowdInstanceValid),
-                // and its bounds would make the group's proof meaningless.
                 const glm::vec4& sphere = instances[i].sphere;
-                const bool finite = std::isfinite(sphere.x) && std::isfinite(sphere.y) && std::isfinite(sphere.z) &&
-                                    std::isfinite(sphere.w) && sphere.w >= 0.0f;
-                if (!finite || !shader::tsLodInFrustum(sphere, p)) {
+                if (!inFrustum(sphere, p)) {
                     seen.candidate = TS_LOD_NONE;
                     continue;
                 }
@@ -205,10 +210,7 @@ std::array<uint32_t, kTierCount> LodManager::countHidden(std::span<const LodInst
         hidden = {};
         for (uint32_t i = range.begin; i < range.end; ++i) {
             const glm::vec4& sphere = instances[i].sphere;
-            const bool finite = std::isfinite(sphere.x) && std::isfinite(sphere.y) && std::isfinite(sphere.z) &&
-                                std::isfinite(sphere.w) && sphere.w >= 0.0f;
-            if (!finite || !shader::tsLodInFrustum(sphere, p) || !mHorizon.behindTerrain(sphere, p))
-                continue;
+            if (!inFrustum(sphere, p) || !mHorizon.behindTerrain(sphere, p)) continue;
             const uint32_t last = i < mSlotState.size() ? shader::tsLodStateTier(mSlotState[i]) : TS_LOD_NONE;
             ++hidden[shader::tsLodCandidate(shader::tsLodPixels(sphere, p), last, p)];
         }
